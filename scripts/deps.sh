@@ -1,0 +1,28 @@
+#!/usr/bin/env bash
+# Install the Debian 12 packages Pineda needs to build, test and run its conformance diff.
+# Idempotent: installs only what is missing.
+set -euo pipefail
+
+PACKAGES=(
+  build-essential cmake ninja-build pkg-config python3
+  khronos-api            # gl.xml / glx.xml: the generator's input
+  libglm-dev             # matrix math outside the hot loops
+  libgtest-dev libgmock-dev googletest
+  libbenchmark-dev
+  libosmesa6-dev         # Mesa's OSMesa: the conformance oracle (never linked into Pineda)
+  libpng-dev zlib1g-dev  # conformance images
+)
+
+missing=()
+for p in "${PACKAGES[@]}"; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+done
+if [ ${#missing[@]} -eq 0 ]; then
+  echo "deps: all ${#PACKAGES[@]} packages present"
+  exit 0
+fi
+SUDO=""
+if [ "$(id -u)" -ne 0 ]; then SUDO="sudo"; fi
+echo "deps: installing ${missing[*]}"
+$SUDO apt-get update -qq
+DEBIAN_FRONTEND=noninteractive $SUDO apt-get install -y -qq --no-install-recommends "${missing[@]}"

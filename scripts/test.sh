@@ -1,0 +1,21 @@
+#!/usr/bin/env bash
+# Quick start, step 2: the tests. Builds Release and runs every ctest test (unit tests and the
+# conformance scenes against OSMesa llvmpipe), then builds with ASan+UBSan and runs the same
+# tests again. .ci/run runs exactly this.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+JOBS=${JOBS:-$(nproc)}
+
+scripts/deps.sh
+
+echo "== Release build and tests"
+cmake -S . -B build -G Ninja -DCMAKE_BUILD_TYPE=Release
+cmake --build build -j "$JOBS"
+ctest --test-dir build -j "$JOBS" --output-on-failure
+
+echo "== ASan+UBSan build and tests"
+cmake -S . -B build-asan -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DPINEDA_SANITIZE=ON
+cmake --build build-asan -j "$JOBS"
+export ASAN_OPTIONS=abort_on_error=1
+export UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1
+ctest --test-dir build-asan -j "$JOBS" --output-on-failure -L sanitize

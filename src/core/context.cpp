@@ -1,0 +1,55 @@
+// Context lifetime, the per-thread current context, and the error helper.
+#include "core/context.h"
+
+#include <cstdio>
+#include <cstdlib>
+
+#include "core/api_util.h"
+#include "dispatch.h"
+
+namespace pineda {
+
+namespace {
+thread_local Context* t_current = nullptr;
+
+bool debug_enabled() {
+  static const bool enabled = [] {
+    const char* v = std::getenv("PINEDA_DEBUG");
+    return v != nullptr && v[0] != '\0' && v[0] != '0';
+  }();
+  return enabled;
+}
+} // namespace
+
+Context::Context() {
+  for (auto& t : arrays.texcoord) t = ClientArray{false, 4, GL_FLOAT, 0, nullptr, 0};
+  imm.reserve(1024);
+}
+
+Context::~Context() = default;
+
+Context* current_context() { return t_current; }
+
+void set_current_context(Context* ctx) {
+  t_current = ctx;
+  // GL 2.1 §2.1: without a current context GL commands are no-ops.
+  t_dispatch = ctx != nullptr ? &kExecDispatch : &kNoopDispatch;
+}
+
+void record_error(Context* ctx, GLenum err, const char* func, GLenum offending) {
+  if (debug_enabled()) {
+    const char* name = enum_name(err);
+    if (offending != 0) {
+      const char* arg = enum_name(offending);
+      if (arg != nullptr)
+        std::fprintf(stderr, "pineda: %s(%s): %s\n", func, arg, name ? name : "?");
+      else
+        std::fprintf(stderr, "pineda: %s(0x%x): %s\n", func, offending, name ? name : "?");
+    } else {
+      std::fprintf(stderr, "pineda: %s: %s\n", func, name ? name : "?");
+    }
+  }
+  if (ctx->error == GL_NO_ERROR) ctx->error = err;
+}
+
+} // namespace pineda

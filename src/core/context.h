@@ -1,0 +1,202 @@
+// The GL state machine of one context (GL 2.1 chapter 6 state tables, restricted to what Pineda
+// implements). Front-end files (src/state/*.cpp) change it through the entry-point skeleton in
+// api_util.h; validate.cpp derives the back end's RasterState from it at draw time.
+#pragma once
+
+#include <GL/gl.h>
+
+#include <array>
+#include <cstdint>
+#include <memory>
+#include <unordered_map>
+#include <vector>
+
+#include <glm/mat4x4.hpp>
+
+#include "framebuffer/framebuffer.h"
+#include "framebuffer/pixel_store.h"
+#include "raster/raster.h"
+
+namespace pineda {
+
+// Which groups of derived state must be recomputed before the next draw.
+enum DirtyBit : uint32_t {
+  kDirtyTransform = 1u << 0,   // modelview or projection changed: composite matrix
+  kDirtyViewport = 1u << 1,    // viewport, depth range
+  kDirtyClipPlanes = 1u << 2,  // user clip planes or their enables
+  kDirtyPolygon = 1u << 3,     // culling, front face, polygon mode, shade model
+  kDirtyFragment = 1u << 4,    // depth, blend, colour mask
+  kDirtyFramebuffer = 1u << 5, // the drawable changed
+  kDirtyAll = 0xffffffffu,
+};
+
+// A matrix stack (GL 2.1 §2.11.2). Element 0 is the bottom; back() is the current matrix.
+struct MatrixStack {
+  std::vector<glm::mat4> stack;
+  size_t max_depth = 0;
+  explicit MatrixStack(size_t depth) : stack(1, glm::mat4(1.0f)), max_depth(depth) {}
+  glm::mat4& top() { return stack.back(); }
+  const glm::mat4& top() const { return stack.back(); }
+};
+
+// One client vertex array (GL 2.1 §2.8) and the buffer object bound when it was specified.
+struct ClientArray {
+  bool enabled = false;
+  GLint size = 4;
+  GLenum type = GL_FLOAT;
+  GLsizei stride = 0;          // as given; 0 means tightly packed
+  const void* pointer = nullptr;
+  GLuint buffer = 0;           // GL_ARRAY_BUFFER_BINDING captured at glXxxPointer time
+};
+
+struct VertexArrays {
+  ClientArray vertex{false, 4, GL_FLOAT, 0, nullptr, 0};
+  ClientArray color{false, 4, GL_FLOAT, 0, nullptr, 0};
+  ClientArray normal{false, 3, GL_FLOAT, 0, nullptr, 0};
+  ClientArray texcoord[kMaxTexUnits];
+  ClientArray edgeflag{false, 1, GL_BOOL, 0, nullptr, 0};
+};
+
+// A buffer object (GL 2.1 §2.9).
+struct BufferObject {
+  std::vector<uint8_t> data;
+  GLenum usage = GL_STATIC_DRAW;
+  GLenum access = GL_READ_WRITE;
+  bool mapped = false;
+  bool ever_bound = false;
+};
+
+// glPushClientAttrib saves these (GL 2.1 §6.1.14, CLIENT_PIXEL_STORE_BIT and
+// CLIENT_VERTEX_ARRAY_BIT).
+struct ClientAttribFrame {
+  GLbitfield mask = 0;
+  PixelStore pack, unpack;
+  VertexArrays arrays;
+  GLuint array_buffer = 0;
+  GLuint element_array_buffer = 0;
+  GLuint client_active_texture = 0;
+};
+
+// The vertex the immediate-mode and array paths collect: object position plus a snapshot of
+// the current attributes (GL 2.1 §2.7).
+struct InputVertex {
+  float pos[4];
+  float color[4];
+  float normal[3];
+  float tex[4]; // texture unit 0; more units come with multitexture
+  uint32_t edge;
+};
+
+constexpr GLenum kOutsideBeginEnd = 0xffffffffu;
+constexpr int kMaxClipPlanes = 6;
+constexpr size_t kModelviewStackDepth = 32;
+constexpr size_t kProjectionStackDepth = 32;
+constexpr size_t kTextureStackDepth = 10;
+constexpr size_t kClientAttribStackDepth = 16;
+constexpr int kMaxViewportDim = 16384;
+
+struct Context {
+  Context();
+  ~Context();
+  Context(const Context&) = delete;
+  Context& operator=(const Context&) = delete;
+
+  // ---- window system (set by osmesa.cpp / glx) ----
+  Framebuffer fb;
+  bool ever_current = false;
+
+  // ---- errors (GL 2.1 §2.5): the first error is kept until glGetError ----
+  GLenum error = GL_NO_ERROR;
+
+  // ---- Begin/End (GL 2.1 §2.6) ----
+  GLenum begin_mode = kOutsideBeginEnd;
+  std::vector<InputVertex> imm;
+
+  // ---- current values (GL 2.1 §2.7, Table 6.5) ----
+  float cur_color[4] = {1, 1, 1, 1};
+  float cur_normal[3] = {0, 0, 1};
+  float cur_tex[kMaxTexUnits][4] = {{0, 0, 0, 1}, {0, 0, 0, 1}, {0, 0, 0, 1}, {0, 0, 0, 1}};
+  bool cur_edge = true;
+
+  // ---- transformation (GL 2.1 §2.11, Table 6.6) ----
+  GLenum matrix_mode = GL_MODELVIEW;
+  MatrixStack modelview{kModelviewStackDepth};
+  MatrixStack projection{kProjectionStackDepth};
+  MatrixStack texture[kMaxTexUnits] = {MatrixStack(kTextureStackDepth),
+                                       MatrixStack(kTextureStackDepth),
+                                       MatrixStack(kTextureStackDepth),
+                                       MatrixStack(kTextureStackDepth)};
+  GLuint active_texture = 0; // GL_TEXTUREi - GL_TEXTURE0
+  GLint vp_x = 0, vp_y = 0;
+  GLsizei vp_w = 0, vp_h = 0;
+  double depth_near = 0.0, depth_far = 1.0;
+  double clip_plane[kMaxClipPlanes][4] = {}; // eye coordinates (GL 2.1 §2.12)
+  bool clip_enabled[kMaxClipPlanes] = {};
+  bool normalize = false;
+  bool rescale_normal = false;
+
+  // ---- rasterization (Table 6.11, 6.12) ----
+  bool cull_enabled = false;
+  GLenum cull_face = GL_BACK;
+  GLenum front_face = GL_CCW;
+  GLenum polygon_mode[2] = {GL_FILL, GL_FILL}; // front, back
+  GLenum shade_model = GL_SMOOTH;
+  float point_size = 1.0f;
+  float line_width = 1.0f;
+
+  // ---- per-fragment operations and framebuffer control (Tables 6.20-6.22) ----
+  bool depth_test = false;
+  GLenum depth_func = GL_LESS;
+  bool depth_mask = true;
+  bool blend = false;
+  GLenum blend_src_rgb = GL_ONE, blend_dst_rgb = GL_ZERO;
+  GLenum blend_src_a = GL_ONE, blend_dst_a = GL_ZERO;
+  GLenum blend_eq_rgb = GL_FUNC_ADD, blend_eq_a = GL_FUNC_ADD;
+  float blend_color[4] = {0, 0, 0, 0};
+  bool dither = true;
+  bool color_mask[4] = {true, true, true, true};
+  float clear_color[4] = {0, 0, 0, 0};
+  double clear_depth = 1.0;
+  GLint clear_stencil = 0;
+  GLuint stencil_writemask = 0xffffffffu;
+
+  // ---- hints (Table 6.38) ----
+  GLenum hint_perspective = GL_DONT_CARE;
+  GLenum hint_point_smooth = GL_DONT_CARE;
+  GLenum hint_line_smooth = GL_DONT_CARE;
+  GLenum hint_polygon_smooth = GL_DONT_CARE;
+  GLenum hint_fog = GL_DONT_CARE;
+  GLenum hint_generate_mipmap = GL_DONT_CARE;
+  GLenum hint_texture_compression = GL_DONT_CARE;
+
+  // ---- client state: pixel store, vertex arrays, buffer objects ----
+  PixelStore pack, unpack;
+  VertexArrays arrays;
+  GLuint client_active_texture = 0;
+  GLuint array_buffer = 0;
+  GLuint element_array_buffer = 0;
+  std::unordered_map<GLuint, std::unique_ptr<BufferObject>> buffers;
+  std::vector<ClientAttribFrame> client_attrib_stack;
+
+  // ---- derived state (validate.cpp) ----
+  uint32_t dirty = kDirtyAll;
+  RasterState raster;
+  glm::mat4 mvp{1.0f};         // projection * modelview
+  bool modelview_identity = true;
+  bool need_eye = false;       // eye coordinates needed (user clip planes)
+
+  // Scratch space reused across draws so the hot path does not allocate.
+  std::vector<InputVertex> fetch_scratch;
+  std::vector<PVertex> pvert_scratch;
+  std::vector<uint32_t> index_scratch;
+};
+
+// The context current on this thread, or nullptr (GL 2.1 §2.1: commands without a current
+// context have no effect).
+Context* current_context();
+void set_current_context(Context* ctx);
+
+// Mark derived state stale.
+inline void mark_dirty(Context* ctx, uint32_t bits) { ctx->dirty |= bits; }
+
+} // namespace pineda

@@ -1,0 +1,98 @@
+// The per-fragment operations (GL 2.1 §4.1) on blocks of up to 8x8 fragments.
+//
+// The rasterizers (raster_tri.cpp, raster_line.cpp, raster_point.cpp) hand over an 8x8 block
+// at a position aligned to 8 in window space, a 64-bit coverage mask (bit 8*row + column)
+// and the primitive's interpolation planes. The block loop that runs is a template instance
+// specialized for the StateKey (state_key.h): no per-fragment branches on state and no
+// per-fragment indirect calls.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+
+#include "fragment/blend.h"
+#include "fragment/state_key.h"
+#include "framebuffer/framebuffer.h"
+#include "raster/raster.h"
+
+namespace pineda {
+
+constexpr int kBlockSize = 8; // blocks are 8x8 and aligned to multiples of 8 in window space
+
+// A linear function of the pixel position, evaluated at pixel centres relative to the origin
+// pixel (FragInputs::ox, oy): value at pixel (ox + i, oy + j) is v0 + i*dx + j*dy. Keeping
+// the origin near the primitive keeps float products small and exact enough.
+struct PlaneF {
+  float v0 = 0, dx = 0, dy = 0;
+};
+struct PlaneD {
+  double v0 = 0, dx = 0, dy = 0;
+};
+
+// Interpolation inputs of one primitive.
+struct FragInputs {
+  int ox = 0, oy = 0;
+  // Window z already multiplied by the depth buffer's maximum value, unclamped; linear in
+  // window space (GL 2.1 §3.5.1 eq 3.10). Double, so 24- and 32-bit buffers get exact steps.
+  PlaneD z;
+  // Perspective-correct colour (GL 2.1 §3.5.1 eq 3.9): c/w and 1/w are linear in window
+  // space; the block loop divides per fragment.
+  PlaneF inv_w;
+  PlaneF color_w[4];
+  uint8_t const_color[4] = {0, 0, 0, 0}; // RGBA for ShadePath::Const
+};
+
+struct FragCtx;
+using BlockFn = void (*)(const FragCtx& ctx, const FragInputs& in, int bx, int by,
+                         uint64_t mask);
+
+// Everything the block loops read that is constant over a draw.
+struct FragCtx {
+  StateKey key;
+  uint8_t* color = nullptr;
+  ptrdiff_t color_stride = 0;
+  uint32_t* depth = nullptr;
+  ptrdiff_t depth_stride = 0;
+  double depth_max = 0; // 2^bits - 1
+  uint8_t depth_func = 0;    // StateKey::depth_func, for the generic path
+  bool depth_write = false;  // for the generic path
+  uint32_t color_keep = 0;   // partial colour mask: bits of the stored pixel to keep
+  BlendParams blend;
+  // Fragments outside this rectangle (inclusive) are never produced: the framebuffer today,
+  // the framebuffer intersected with the scissor box later.
+  int clip_x0 = 0, clip_y0 = 0, clip_x1 = -1, clip_y1 = -1;
+  bool noop = true;          // nothing can change: no colour write and no depth test
+  bool needs_color = false;  // the colour path reads the primitive's colour
+  bool needs_depth = false;  // the depth path reads the primitive's z
+  BlockFn fn[kShadePathCount] = {nullptr, nullptr}; // indexed by ShadePath
+};
+
+// Fills ctx for one draw: the key, the surfaces and the selected block loops.
+void prepare_fragments(const RasterState& rs, const Framebuffer& fb, FragCtx& ctx);
+
+// The block loop for a key and shade path (exposed for tests).
+BlockFn select_block_fn(const StateKey& key, ShadePath shade);
+
+// Mask of the pixels of the block at (bx, by) inside the inclusive rectangle [x0,x1]x[y0,y1].
+inline uint64_t rect_block_mask(int x0, int y0, int x1, int y1, int bx, int by) {
+  const int c0 = x0 - bx > 0 ? x0 - bx : 0;
+  const int c1 = x1 - bx < 7 ? x1 - bx : 7;
+  const int r0 = y0 - by > 0 ? y0 - by : 0;
+  const int r1 = y1 - by < 7 ? y1 - by : 7;
+  if (c0 > c1 || r0 > r1) return 0;
+  const uint64_t row = (0xffu >> (7 - c1)) & (0xffu << c0) & 0xffu;
+  const uint64_t rows = (~0ull >> (8 * (7 - r1))) & (~0ull << (8 * r0));
+  return (row * 0x0101010101010101ull) & rows;
+}
+
+inline uint64_t block_clip_mask(const FragCtx& ctx, int bx, int by) {
+  return rect_block_mask(ctx.clip_x0, ctx.clip_y0, ctx.clip_x1, ctx.clip_y1, bx, by);
+}
+
+// Fragment colour to unorm8: clamp to [0,1], then round(c * 255) (GL 2.1 §2.14.9).
+inline uint8_t color_to_unorm8(float c) {
+  c = c > 0.0f ? (c < 1.0f ? c : 1.0f) : 0.0f;
+  return static_cast<uint8_t>(c * 255.0f + 0.5f);
+}
+
+} // namespace pineda

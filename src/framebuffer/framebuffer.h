@@ -1,0 +1,42 @@
+// The surfaces one context draws into. The window-system layer (OSMesa, GLX) owns the memory;
+// the pipeline only sees this plain description. Row 0 is the bottom row (GL window origin);
+// a top-down user buffer is described with a negative stride.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+
+namespace pineda {
+
+// Byte order of a colour pixel in memory. Every format is 8 bits per channel.
+enum class ColorFormat : uint8_t {
+  RGBA8, // bytes R,G,B,A
+  BGRA8, // bytes B,G,R,A
+  ARGB8, // bytes A,R,G,B
+  RGB8,  // bytes R,G,B (3 bytes per pixel, alpha reads as 255)
+};
+
+inline int bytes_per_pixel(ColorFormat f) { return f == ColorFormat::RGB8 ? 3 : 4; }
+
+struct Framebuffer {
+  int width = 0;
+  int height = 0;
+
+  ColorFormat color_format = ColorFormat::RGBA8;
+  uint8_t* color = nullptr;    // address of pixel (0,0), the bottom-left one
+  ptrdiff_t color_stride = 0;  // bytes from row y to row y+1 (negative for top-down memory)
+  int alpha_bits = 8;          // 0 for formats without alpha (RGB8)
+
+  uint32_t* depth = nullptr;   // width*height values, row 0 at the bottom, stride = width
+  int depth_bits = 0;          // 0 (no depth buffer), 16, 24 or 32; values in [0, 2^bits - 1]
+
+  uint8_t* stencil = nullptr;  // width*height, row 0 at the bottom, stride = width
+  int stencil_bits = 0;        // 0 or 8
+
+  uint8_t* color_row(int y) const { return color + static_cast<ptrdiff_t>(y) * color_stride; }
+  uint32_t depth_max() const {
+    return depth_bits >= 32 ? 0xffffffffu : ((1u << depth_bits) - 1u);
+  }
+};
+
+} // namespace pineda

@@ -1,0 +1,258 @@
+// Primitive assembly (GL 2.1 §2.6.1): the ten Begin modes become points, segments and
+// triangles; then clip codes, clipping (clip.cpp), facing, culling and polygon mode
+// (cull.h), and the rasterizer.
+//
+// Quads, quad strips and polygons are split into triangles before clipping, exactly as Mesa
+// splits them (same diagonals, same vertex order, interior edges flagged non-boundary): the
+// split decides how a smooth-shaded quad's colours are interpolated, and clipping a triangle
+// leaves its interpolation unchanged, so a quad shades the same whether or not it is clipped.
+// Every emitted triangle lists its provoking vertex (GL 2.1 §2.14.7, Table 2.12) last.
+#include <cstddef>
+#include <cstdint>
+
+#include "geometry/clip.h"
+#include "geometry/cull.h"
+#include "raster/raster.h"
+
+namespace pineda {
+
+namespace {
+
+// Edge bits of a triangle a, b, c: which of a->b, b->c, c->a are boundary edges (§2.6.2).
+constexpr unsigned kEdgeAB = 1u, kEdgeBC = 2u, kEdgeCA = 4u;
+constexpr unsigned kEdgeAll = 7u;
+
+inline unsigned flag_bit(const PVertex& v, unsigned bit) {
+  return v.edgeflag ? bit : 0u;
+}
+
+// Production sink: straight to the rasterizer.
+struct RasterSink {
+  const DrawCall& dc;
+  void triangle(const PVertex& a, const PVertex& b, const PVertex& c, const PVertex& provoking,
+                bool back) {
+    raster_triangle(dc, a, b, c, provoking, back);
+  }
+  void line(const PVertex& a, const PVertex& b, const PVertex& provoking) {
+    raster_line(dc, a, b, provoking);
+  }
+  void point(const PVertex& p) { raster_point(dc, p); }
+};
+
+// Vertex fetch with and without an index list.
+struct DirectFetch {
+  const PVertex* v;
+  const PVertex& operator()(size_t i) const { return v[i]; }
+};
+struct IndexedFetch {
+  const PVertex* v;
+  const uint32_t* idx;
+  const PVertex& operator()(size_t i) const { return v[idx[i]]; }
+};
+
+template <class Sink> class Assembler {
+public:
+  Assembler(const DrawCall& dc, Sink& sink) : sink_(sink) {
+    const RasterState& rs = *dc.state;
+    init_face_state(face_, rs);
+    init_clip_setup(clip_, rs);
+    fill_fast_ = rs.polygon_mode[0] == GL_FILL && rs.polygon_mode[1] == GL_FILL && !rs.two_sided;
+  }
+
+  template <class Fetch> void run(GLenum mode, const Fetch& f, size_t count);
+
+private:
+  void point(const PVertex& p) {
+    // GL 2.1 §2.12: a point is passed iff it lies inside the clip volume. A clip code of zero
+    // also keeps it inside the guard band with w > 0.
+    if (p.clipmask == 0) sink_.point(p);
+  }
+
+  // Segment a-b; GL 2.1 §2.14.7: the second vertex provokes.
+  void line(const PVertex& a, const PVertex& b) {
+    if ((a.clipmask & b.clipmask) != 0) return;
+    if ((a.clipmask | b.clipmask) == 0) {
+      sink_.line(a, b, b);
+      return;
+    }
+    line_clipped(a, b);
+  }
+
+  // Triangle a, b, c with c provoking. The all-inside FILL case is the hot path: snap,
+  // area, cull, rasterize.
+  void triangle(const PVertex& a, const PVertex& b, const PVertex& c, unsigned edges) {
+    if ((a.clipmask & b.clipmask & c.clipmask) != 0) return;
+    if ((a.clipmask | b.clipmask | c.clipmask) != 0) {
+      triangle_clipped(a, b, c, edges);
+      return;
+    }
+    const int64_t area2 = fixed_area2(a, b, c);
+    const bool back = is_back_facing(face_, area2);
+    if (is_culled(face_, back)) return;
+    if (fill_fast_) {
+      if (area2 != 0) sink_.triangle(a, b, c, c, back);
+      return;
+    }
+    const PVertex* v[3] = {&a, &b, &c};
+    const bool e[3] = {(edges & kEdgeAB) != 0, (edges & kEdgeBC) != 0, (edges & kEdgeCA) != 0};
+    // Mesa outlines an unclipped triangle starting with its closing edge c->a.
+    emit_polygon(face_, sink_, v, e, 3, 2, c, back, area2);
+  }
+
+  void line_clipped(const PVertex& a, const PVertex& b);
+  void triangle_clipped(const PVertex& a, const PVertex& b, const PVertex& c, unsigned edges);
+
+  Sink& sink_;
+  FaceState face_;
+  ClipSetup clip_;
+  // Both faces FILL and one-sided colours: an unclipped triangle needs no edge flags, no
+  // colour swap and no fan, only the rasterizer call.
+  bool fill_fast_ = true;
+};
+
+template <class Sink>
+[[gnu::noinline]] void Assembler<Sink>::line_clipped(const PVertex& a, const PVertex& b) {
+  ClipScratch scratch;
+  const PVertex* ca = nullptr;
+  const PVertex* cb = nullptr;
+  if (!clip_segment(clip_, planes_for_mask(a.clipmask | b.clipmask), a, b, scratch, &ca, &cb))
+    return;
+  // The original second vertex keeps supplying the flat colour.
+  sink_.line(*ca, *cb, b);
+}
+
+template <class Sink>
+[[gnu::noinline]] void Assembler<Sink>::triangle_clipped(const PVertex& a, const PVertex& b,
+                                                         const PVertex& c, unsigned edges) {
+  ClipScratch scratch;
+  ClipPolygon poly;
+  poly.n = 3;
+  poly.v[0] = &a;
+  poly.v[1] = &b;
+  poly.v[2] = &c;
+  poly.edge[0] = (edges & kEdgeAB) != 0;
+  poly.edge[1] = (edges & kEdgeBC) != 0;
+  poly.edge[2] = (edges & kEdgeCA) != 0;
+  if (!clip_polygon(clip_, planes_for_mask(a.clipmask | b.clipmask | c.clipmask), poly, scratch))
+    return;
+  // Facing of what remains (GL 2.1 §3.5.1: facing is decided after clipping), from the same
+  // snapped coordinates the rasterizer sees.
+  const int64_t area2 = polygon_area2(poly.v, poly.n);
+  const bool back = is_back_facing(face_, area2);
+  if (is_culled(face_, back)) return;
+  // c stays the provoking vertex even when clipping removed it (GL 2.1 §2.14.7).
+  emit_polygon(face_, sink_, poly.v, poly.edge, poly.n, 0, c, back, area2);
+}
+
+template <class Sink>
+template <class Fetch>
+void Assembler<Sink>::run(GLenum mode, const Fetch& f, size_t count) {
+  switch (mode) {
+  case GL_POINTS:
+    for (size_t i = 0; i < count; ++i)
+      point(f(i));
+    break;
+  case GL_LINES:
+    for (size_t i = 0; i + 1 < count; i += 2)
+      line(f(i), f(i + 1));
+    break;
+  case GL_LINE_STRIP:
+  case GL_LINE_LOOP:
+    if (count < 2) break;
+    for (size_t i = 1; i < count; ++i)
+      line(f(i - 1), f(i));
+    // The closing segment runs from the last vertex to the first, which as its second
+    // vertex provokes (GL 2.1 §2.14.7).
+    if (mode == GL_LINE_LOOP) line(f(count - 1), f(0));
+    break;
+  case GL_TRIANGLES:
+    // Table 2.12: vertex 3i provokes. Edge flags apply (§2.6.2).
+    for (size_t i = 0; i + 2 < count; i += 3) {
+      const PVertex& a = f(i);
+      const PVertex& b = f(i + 1);
+      const PVertex& c = f(i + 2);
+      triangle(a, b, c, flag_bit(a, kEdgeAB) | flag_bit(b, kEdgeBC) | flag_bit(c, kEdgeCA));
+    }
+    break;
+  case GL_TRIANGLE_STRIP:
+    // §2.6.1: odd triangles are (A, B, current) with A and B swapped relative to the even
+    // ones, which keeps the strip's orientation; vertex i+2 provokes (Table 2.12).
+    for (size_t i = 0; i + 2 < count; ++i) {
+      if (i & 1)
+        triangle(f(i + 1), f(i), f(i + 2), kEdgeAll);
+      else
+        triangle(f(i), f(i + 1), f(i + 2), kEdgeAll);
+    }
+    break;
+  case GL_TRIANGLE_FAN:
+    for (size_t i = 0; i + 2 < count; ++i)
+      triangle(f(0), f(i + 1), f(i + 2), kEdgeAll);
+    break;
+  case GL_QUADS:
+    // Vertex 4i provokes. Split along q1-q3 as Mesa does; the diagonal is not an edge.
+    for (size_t i = 0; i + 3 < count; i += 4) {
+      const PVertex& q0 = f(i);
+      const PVertex& q1 = f(i + 1);
+      const PVertex& q2 = f(i + 2);
+      const PVertex& q3 = f(i + 3);
+      triangle(q0, q1, q3, flag_bit(q0, kEdgeAB) | flag_bit(q3, kEdgeCA));
+      triangle(q1, q2, q3, flag_bit(q1, kEdgeAB) | flag_bit(q2, kEdgeBC));
+    }
+    break;
+  case GL_QUAD_STRIP:
+    // Quad j is v2j, v2j+1, v2j+3, v2j+2 (§2.6.1); vertex 2j+3 (Table 2.12's 2i+2, counted
+    // from one) provokes. Split along v2j-v2j+3 as Mesa does. Edge flags do not apply.
+    for (size_t i = 0; i + 3 < count; i += 2) {
+      const PVertex& v0 = f(i);
+      const PVertex& v1 = f(i + 1);
+      const PVertex& v2 = f(i + 2);
+      const PVertex& v3 = f(i + 3);
+      triangle(v2, v0, v3, kEdgeAB | kEdgeCA);
+      triangle(v0, v1, v3, kEdgeAB | kEdgeBC);
+    }
+    break;
+  case GL_POLYGON: {
+    // Vertex 1 provokes (Table 2.12). Fan around v0, each triangle v(i+1), v(i+2), v0 so the
+    // provoking vertex is last; only the polygon's own edges are boundary edges.
+    if (count < 3) break;
+    const PVertex& v0 = f(0);
+    for (size_t i = 0; i + 2 < count; ++i) {
+      const PVertex& a = f(i + 1);
+      const PVertex& b = f(i + 2);
+      unsigned e = flag_bit(a, kEdgeAB);
+      if (i + 3 == count) e |= flag_bit(b, kEdgeBC);
+      if (i == 0) e |= flag_bit(v0, kEdgeCA);
+      triangle(a, b, v0, e);
+    }
+    break;
+  }
+  default:
+    break;
+  }
+}
+
+template <class Sink>
+void assemble(Sink& sink, const DrawCall& dc, GLenum mode, const PVertex* verts,
+              const uint32_t* indices, size_t count) {
+  if (verts == nullptr || count == 0 || dc.state == nullptr) return;
+  Assembler<Sink> as(dc, sink);
+  if (indices != nullptr)
+    as.run(mode, IndexedFetch{verts, indices}, count);
+  else
+    as.run(mode, DirectFetch{verts}, count);
+}
+
+} // namespace
+
+void draw_primitives(const DrawCall& dc, GLenum mode, const PVertex* verts, const uint32_t* indices,
+                     size_t count) {
+  RasterSink sink{dc};
+  assemble(sink, dc, mode, verts, indices, count);
+}
+
+void draw_primitives_to(PrimitiveSink& sink, const DrawCall& dc, GLenum mode, const PVertex* verts,
+                        const uint32_t* indices, size_t count) {
+  assemble(sink, dc, mode, verts, indices, count);
+}
+
+} // namespace pineda

@@ -1,0 +1,188 @@
+// Vertex fetch: convert array elements to InputVertex (GL 2.1 §2.8). Each attribute is a
+// separate loop with the component type hoisted out, so the inner loop is a plain copy and
+// convert.
+#include "geometry/fetch.h"
+
+#include <cstddef>
+#include <cstring>
+#include <type_traits>
+
+namespace pineda {
+
+size_t type_size(GLenum type) {
+  switch (type) {
+  case GL_BYTE:
+  case GL_UNSIGNED_BYTE:
+  case GL_BOOL:
+    return 1;
+  case GL_SHORT:
+  case GL_UNSIGNED_SHORT:
+    return 2;
+  case GL_INT:
+  case GL_UNSIGNED_INT:
+  case GL_FLOAT:
+    return 4;
+  case GL_DOUBLE:
+    return 8;
+  default:
+    return 0;
+  }
+}
+
+size_t array_stride(const ClientArray& a) {
+  return a.stride != 0 ? static_cast<size_t>(a.stride)
+                       : static_cast<size_t>(a.size) * type_size(a.type);
+}
+
+namespace {
+
+// Element k of the draw: either first + k or list[k].
+struct RangeElements {
+  size_t first;
+  size_t operator[](size_t k) const { return first + k; }
+};
+struct ListElements {
+  const uint32_t* list;
+  size_t operator[](size_t k) const { return list[k]; }
+};
+
+// GL 2.1 Table 2.9 conversions for normalized attributes (colours, normals).
+template <typename T> inline float to_float(T v, bool normalized) {
+  if (!normalized) return static_cast<float>(v);
+  if constexpr (std::is_same_v<T, GLubyte>) return static_cast<float>(v) * (1.0f / 255.0f);
+  if constexpr (std::is_same_v<T, GLbyte>) return (2.0f * v + 1.0f) * (1.0f / 255.0f);
+  if constexpr (std::is_same_v<T, GLushort>) return static_cast<float>(v) * (1.0f / 65535.0f);
+  if constexpr (std::is_same_v<T, GLshort>) return (2.0f * v + 1.0f) * (1.0f / 65535.0f);
+  if constexpr (std::is_same_v<T, GLuint>)
+    return static_cast<float>(static_cast<double>(v) / 4294967295.0);
+  if constexpr (std::is_same_v<T, GLint>) return static_cast<float>((2.0 * v + 1.0) / 4294967295.0);
+  return static_cast<float>(v);
+}
+
+// Copy `a.size` components of each element into dst (one float[4] per vertex, at byte
+// offset `field` inside InputVertex), leaving the remaining components as they are.
+template <typename T, typename Elements>
+void convert(const uint8_t* base, size_t stride, int size, bool normalized, Elements el, size_t n,
+             InputVertex* out, size_t field) {
+  for (size_t k = 0; k < n; ++k) {
+    const uint8_t* src = base + el[k] * stride;
+    float* dst = reinterpret_cast<float*>(reinterpret_cast<uint8_t*>(&out[k]) + field);
+    for (int c = 0; c < size; ++c) {
+      T v;
+      std::memcpy(&v, src + c * sizeof(T), sizeof(T));
+      dst[c] = to_float(v, normalized);
+    }
+  }
+}
+
+template <typename Elements>
+void convert_any(const ClientArray& a, const uint8_t* base, bool normalized, Elements el, size_t n,
+                 InputVertex* out, size_t field) {
+  const size_t stride = array_stride(a);
+  switch (a.type) {
+  case GL_BYTE:
+    convert<GLbyte>(base, stride, a.size, normalized, el, n, out, field);
+    break;
+  case GL_UNSIGNED_BYTE:
+    convert<GLubyte>(base, stride, a.size, normalized, el, n, out, field);
+    break;
+  case GL_SHORT:
+    convert<GLshort>(base, stride, a.size, normalized, el, n, out, field);
+    break;
+  case GL_UNSIGNED_SHORT:
+    convert<GLushort>(base, stride, a.size, normalized, el, n, out, field);
+    break;
+  case GL_INT:
+    convert<GLint>(base, stride, a.size, normalized, el, n, out, field);
+    break;
+  case GL_UNSIGNED_INT:
+    convert<GLuint>(base, stride, a.size, normalized, el, n, out, field);
+    break;
+  case GL_FLOAT:
+    convert<GLfloat>(base, stride, a.size, normalized, el, n, out, field);
+    break;
+  case GL_DOUBLE:
+    convert<GLdouble>(base, stride, a.size, normalized, el, n, out, field);
+    break;
+  default:
+    break;
+  }
+}
+
+// Where the array's data starts, or nullptr when a buffer-backed array would read past its
+// buffer for the largest element `max_element`.
+const uint8_t* array_base(Context* ctx, const ClientArray& a, size_t max_element) {
+  if (a.buffer == 0) return static_cast<const uint8_t*>(a.pointer);
+  auto it = ctx->buffers.find(a.buffer);
+  if (it == ctx->buffers.end()) return nullptr;
+  const std::vector<uint8_t>& data = it->second->data;
+  const size_t offset = reinterpret_cast<uintptr_t>(a.pointer);
+  const size_t need =
+      offset + max_element * array_stride(a) + static_cast<size_t>(a.size) * type_size(a.type);
+  if (need > data.size() || need < offset) return nullptr;
+  return data.data() + offset;
+}
+
+template <typename Elements>
+bool fetch(Context* ctx, Elements el, size_t n, size_t max_element, InputVertex* out) {
+  const VertexArrays& arr = ctx->arrays;
+  const ClientArray* arrays[5] = {&arr.vertex, &arr.color, &arr.normal, &arr.texcoord[0],
+                                  &arr.edgeflag};
+  const uint8_t* bases[5] = {};
+  for (int i = 0; i < 5; ++i) {
+    if (!arrays[i]->enabled) continue;
+    bases[i] = array_base(ctx, *arrays[i], max_element);
+    if (bases[i] == nullptr) return false;
+  }
+  // Defaults: current values for disabled arrays (GL 2.1 §2.8), and the spec's (0,0,0,1)
+  // completion of partial positions and texture coordinates.
+  InputVertex def;
+  def.pos[0] = def.pos[1] = def.pos[2] = 0.0f;
+  def.pos[3] = 1.0f;
+  for (int i = 0; i < 4; ++i)
+    def.color[i] = ctx->cur_color[i];
+  for (int i = 0; i < 3; ++i)
+    def.normal[i] = ctx->cur_normal[i];
+  for (int i = 0; i < 4; ++i)
+    def.tex[i] = arr.texcoord[0].enabled ? (i == 3 ? 1.0f : 0.0f) : ctx->cur_tex[0][i];
+  if (arr.color.enabled && arr.color.size == 3) def.color[3] = 1.0f;
+  def.edge = ctx->cur_edge ? 1u : 0u;
+  for (size_t k = 0; k < n; ++k)
+    out[k] = def;
+
+  if (bases[0]) convert_any(arr.vertex, bases[0], false, el, n, out, offsetof(InputVertex, pos));
+  if (bases[1]) convert_any(arr.color, bases[1], true, el, n, out, offsetof(InputVertex, color));
+  if (bases[2]) convert_any(arr.normal, bases[2], true, el, n, out, offsetof(InputVertex, normal));
+  if (bases[3])
+    convert_any(arr.texcoord[0], bases[3], false, el, n, out, offsetof(InputVertex, tex));
+  if (bases[4]) {
+    const size_t stride = array_stride(arr.edgeflag);
+    for (size_t k = 0; k < n; ++k)
+      out[k].edge = bases[4][el[k] * stride] != 0 ? 1u : 0u;
+  }
+  return true;
+}
+
+} // namespace
+
+bool arrays_hold(Context* ctx, size_t max_element) {
+  const VertexArrays& arr = ctx->arrays;
+  for (const ClientArray* a :
+       {&arr.vertex, &arr.color, &arr.normal, &arr.texcoord[0], &arr.edgeflag})
+    if (a->enabled && array_base(ctx, *a, max_element) == nullptr) return false;
+  return true;
+}
+
+bool fetch_range(Context* ctx, size_t first, size_t n, InputVertex* out) {
+  if (n == 0) return true;
+  return fetch(ctx, RangeElements{first}, n, first + n - 1, out);
+}
+
+bool fetch_list(Context* ctx, const uint32_t* elements, size_t n, InputVertex* out) {
+  uint32_t max_element = 0;
+  for (size_t k = 0; k < n; ++k)
+    max_element = elements[k] > max_element ? elements[k] : max_element;
+  return fetch(ctx, ListElements{elements}, n, max_element, out);
+}
+
+} // namespace pineda

@@ -1,0 +1,19 @@
+// The geometry stage's entry points: from InputVertex (object coordinates + current
+// attributes) to the back end (GL 2.1 §2.11-§2.14).
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+
+#include "core/context.h"
+
+namespace pineda {
+
+// Bring ctx->raster and the composite matrices up to date with the GL state (validate.cpp).
+void validate_state(Context* ctx);
+
+// Transform `n` vertices and draw them in `mode`; indices (optional) select among them.
+void draw_vertices(Context* ctx, GLenum mode, const InputVertex* verts, size_t n,
+                   const uint32_t* indices, size_t count);
+
+} // namespace pineda

@@ -1,0 +1,43 @@
+// The processed vertex: what the geometry stage hands to primitive assembly, clipping and
+// rasterization. One layout for every path (immediate mode, arrays, buffers, display lists).
+#pragma once
+
+#include <cstdint>
+
+namespace pineda {
+
+// Attribute slots in PVertex::attr. The layout is fixed; RasterState::attr_count says how many
+// leading floats are live (clipped and interpolated), so a scene that reads only colour pays
+// for four floats.
+constexpr int kAttrColor = 0;       // primary colour RGBA, clamped to [0,1]
+constexpr int kAttrColor2 = 4;      // secondary colour RGB(A) (GL 1.4 colour sum)
+constexpr int kAttrTex0 = 8;        // texture unit u at kAttrTex0 + 4*u, (s,t,r,q)
+constexpr int kMaxTexUnits = 4;
+constexpr int kAttrFog = kAttrTex0 + 4 * kMaxTexUnits;  // 24: fog coordinate / factor
+constexpr int kAttrBackColor = 28;  // two-sided lighting: back primary colour
+constexpr int kAttrBackColor2 = 32; // two-sided lighting: back secondary colour
+constexpr int kMaxAttr = 36;
+
+// Clip code bits (GL 2.1 §2.12). A bit is set when the vertex is outside that half-space.
+enum ClipBit : uint32_t {
+  kClipLeft = 1u << 0,   // x < -w
+  kClipRight = 1u << 1,  // x >  w
+  kClipBottom = 1u << 2, // y < -w
+  kClipTop = 1u << 3,    // y >  w
+  kClipNear = 1u << 4,   // z < -w
+  kClipFar = 1u << 5,    // z >  w
+  kClipUser0 = 1u << 6,  // user plane i at kClipUser0 << i (i < 6): dot(plane, clip) < 0
+  kClipGuard = 1u << 12, // x or y outside the guard band (see raster.h kGuardBand)
+};
+constexpr uint32_t kClipFrustumMask = 0x3f;
+
+struct PVertex {
+  float clip[4]; // clip coordinates (x, y, z, w)
+  float win[4];  // window x, y; z after depth range in [0,1]; win[3] = 1 / clip w.
+                 // Valid whenever clipmask == 0, and for every vertex the clipper emits.
+  float attr[kMaxAttr];
+  uint32_t clipmask; // ClipBit set for this vertex
+  uint32_t edgeflag; // GL edge flag (1 = boundary edge starts here)
+};
+
+} // namespace pineda

@@ -1,0 +1,206 @@
+// glBegin/glEnd, glVertex and the current attributes, glRect (GL 2.1 §2.6, §2.7, §2.10).
+#include <cstdint>
+
+#include "core/api_util.h"
+#include "dispatch.h"
+#include "geometry/geometry.h"
+
+namespace pineda {
+
+namespace {
+
+// GL 2.1 Table 2.9: integer colour and normal components map to [-1,1] or [0,1].
+inline float norm(GLubyte c) { return static_cast<float>(c) * (1.0f / 255.0f); }
+inline float norm(GLbyte c) { return (2.0f * c + 1.0f) * (1.0f / 255.0f); }
+inline float norm(GLushort c) { return static_cast<float>(c) * (1.0f / 65535.0f); }
+inline float norm(GLshort c) { return (2.0f * c + 1.0f) * (1.0f / 65535.0f); }
+inline float norm(GLuint c) { return static_cast<float>(static_cast<double>(c) / 4294967295.0); }
+inline float norm(GLint c) {
+  return static_cast<float>((2.0 * c + 1.0) / 4294967295.0);
+}
+inline float norm(GLfloat c) { return c; }
+inline float norm(GLdouble c) { return static_cast<float>(c); }
+
+inline void vertex(float x, float y, float z, float w) {
+  Context* ctx = current_context();
+  // GL 2.1 §2.7: a Vertex outside Begin/End has undefined effect; Pineda ignores it.
+  if (ctx == nullptr || ctx->begin_mode == kOutsideBeginEnd) return;
+  InputVertex& v = ctx->imm.emplace_back();
+  v.pos[0] = x, v.pos[1] = y, v.pos[2] = z, v.pos[3] = w;
+  for (int i = 0; i < 4; ++i) v.color[i] = ctx->cur_color[i];
+  for (int i = 0; i < 3; ++i) v.normal[i] = ctx->cur_normal[i];
+  for (int i = 0; i < 4; ++i) v.tex[i] = ctx->cur_tex[0][i];
+  v.edge = ctx->cur_edge ? 1u : 0u;
+}
+
+inline void color(float r, float g, float b, float a) {
+  Context* ctx = current_context();
+  if (ctx == nullptr) return;
+  ctx->cur_color[0] = r, ctx->cur_color[1] = g, ctx->cur_color[2] = b, ctx->cur_color[3] = a;
+}
+
+inline void normal(float x, float y, float z) {
+  Context* ctx = current_context();
+  if (ctx == nullptr) return;
+  ctx->cur_normal[0] = x, ctx->cur_normal[1] = y, ctx->cur_normal[2] = z;
+}
+
+inline void texcoord(float s, float t, float r, float q) {
+  Context* ctx = current_context();
+  if (ctx == nullptr) return;
+  float* tc = ctx->cur_tex[0];
+  tc[0] = s, tc[1] = t, tc[2] = r, tc[3] = q;
+}
+
+template <typename T> void rect(T x1, T y1, T x2, T y2) {
+  Context* ctx = current_context();
+  if (ctx == nullptr) return;
+  if (ctx->begin_mode != kOutsideBeginEnd) {
+    record_error(ctx, GL_INVALID_OPERATION, "glRect");
+    return;
+  }
+  // GL 2.1 §2.10: Rect is Begin(POLYGON), four Vertex2 calls, End.
+  exec::Begin(GL_POLYGON);
+  vertex(static_cast<float>(x1), static_cast<float>(y1), 0.0f, 1.0f);
+  vertex(static_cast<float>(x2), static_cast<float>(y1), 0.0f, 1.0f);
+  vertex(static_cast<float>(x2), static_cast<float>(y2), 0.0f, 1.0f);
+  vertex(static_cast<float>(x1), static_cast<float>(y2), 0.0f, 1.0f);
+  exec::End();
+}
+
+} // namespace
+
+namespace exec {
+
+void GLAPIENTRY Begin(GLenum mode) {
+  Context* ctx = current_context();
+  if (ctx == nullptr) return;
+  if (ctx->begin_mode != kOutsideBeginEnd) {
+    record_error(ctx, GL_INVALID_OPERATION, "glBegin");
+    return;
+  }
+  if (mode > GL_POLYGON) {
+    record_error(ctx, GL_INVALID_ENUM, "glBegin", mode);
+    return;
+  }
+  ctx->begin_mode = mode;
+  ctx->imm.clear();
+}
+
+void GLAPIENTRY End() {
+  Context* ctx = current_context();
+  if (ctx == nullptr) return;
+  if (ctx->begin_mode == kOutsideBeginEnd) {
+    record_error(ctx, GL_INVALID_OPERATION, "glEnd");
+    return;
+  }
+  const GLenum mode = ctx->begin_mode;
+  ctx->begin_mode = kOutsideBeginEnd;
+  if (!ctx->imm.empty())
+    draw_vertices(ctx, mode, ctx->imm.data(), ctx->imm.size(), nullptr, ctx->imm.size());
+  ctx->imm.clear();
+}
+
+// Each macro line spells out one family of GL 1.0 attribute commands; they differ only in
+// the component type and count.
+#define PINEDA_VERTEX(T, S)                                                                        \
+  void GLAPIENTRY Vertex2##S(T x, T y) { vertex(float(x), float(y), 0.0f, 1.0f); }                 \
+  void GLAPIENTRY Vertex3##S(T x, T y, T z) { vertex(float(x), float(y), float(z), 1.0f); }        \
+  void GLAPIENTRY Vertex4##S(T x, T y, T z, T w) {                                                 \
+    vertex(float(x), float(y), float(z), float(w));                                                \
+  }                                                                                                \
+  void GLAPIENTRY Vertex2##S##v(const T* v) {                                                      \
+    if (v) vertex(float(v[0]), float(v[1]), 0.0f, 1.0f);                                           \
+  }                                                                                                \
+  void GLAPIENTRY Vertex3##S##v(const T* v) {                                                      \
+    if (v) vertex(float(v[0]), float(v[1]), float(v[2]), 1.0f);                                    \
+  }                                                                                                \
+  void GLAPIENTRY Vertex4##S##v(const T* v) {                                                      \
+    if (v) vertex(float(v[0]), float(v[1]), float(v[2]), float(v[3]));                             \
+  }
+PINEDA_VERTEX(GLshort, s)
+PINEDA_VERTEX(GLint, i)
+PINEDA_VERTEX(GLfloat, f)
+PINEDA_VERTEX(GLdouble, d)
+#undef PINEDA_VERTEX
+
+#define PINEDA_COLOR(T, S)                                                                         \
+  void GLAPIENTRY Color3##S(T r, T g, T b) { color(norm(r), norm(g), norm(b), 1.0f); }             \
+  void GLAPIENTRY Color4##S(T r, T g, T b, T a) { color(norm(r), norm(g), norm(b), norm(a)); }     \
+  void GLAPIENTRY Color3##S##v(const T* v) {                                                       \
+    if (v) color(norm(v[0]), norm(v[1]), norm(v[2]), 1.0f);                                        \
+  }                                                                                                \
+  void GLAPIENTRY Color4##S##v(const T* v) {                                                       \
+    if (v) color(norm(v[0]), norm(v[1]), norm(v[2]), norm(v[3]));                                  \
+  }
+PINEDA_COLOR(GLbyte, b)
+PINEDA_COLOR(GLshort, s)
+PINEDA_COLOR(GLint, i)
+PINEDA_COLOR(GLfloat, f)
+PINEDA_COLOR(GLdouble, d)
+PINEDA_COLOR(GLubyte, ub)
+PINEDA_COLOR(GLushort, us)
+PINEDA_COLOR(GLuint, ui)
+#undef PINEDA_COLOR
+
+#define PINEDA_NORMAL(T, S)                                                                        \
+  void GLAPIENTRY Normal3##S(T x, T y, T z) { normal(norm(x), norm(y), norm(z)); }                 \
+  void GLAPIENTRY Normal3##S##v(const T* v) {                                                      \
+    if (v) normal(norm(v[0]), norm(v[1]), norm(v[2]));                                             \
+  }
+PINEDA_NORMAL(GLbyte, b)
+PINEDA_NORMAL(GLshort, s)
+PINEDA_NORMAL(GLint, i)
+PINEDA_NORMAL(GLfloat, f)
+PINEDA_NORMAL(GLdouble, d)
+#undef PINEDA_NORMAL
+
+// Texture coordinates are not normalized (GL 2.1 §2.7): integers convert directly.
+#define PINEDA_TEXCOORD(T, S)                                                                      \
+  void GLAPIENTRY TexCoord1##S(T s) { texcoord(float(s), 0.0f, 0.0f, 1.0f); }                      \
+  void GLAPIENTRY TexCoord2##S(T s, T t) { texcoord(float(s), float(t), 0.0f, 1.0f); }             \
+  void GLAPIENTRY TexCoord3##S(T s, T t, T r) { texcoord(float(s), float(t), float(r), 1.0f); }    \
+  void GLAPIENTRY TexCoord4##S(T s, T t, T r, T q) {                                               \
+    texcoord(float(s), float(t), float(r), float(q));                                              \
+  }                                                                                                \
+  void GLAPIENTRY TexCoord1##S##v(const T* v) {                                                    \
+    if (v) texcoord(float(v[0]), 0.0f, 0.0f, 1.0f);                                                \
+  }                                                                                                \
+  void GLAPIENTRY TexCoord2##S##v(const T* v) {                                                    \
+    if (v) texcoord(float(v[0]), float(v[1]), 0.0f, 1.0f);                                         \
+  }                                                                                                \
+  void GLAPIENTRY TexCoord3##S##v(const T* v) {                                                    \
+    if (v) texcoord(float(v[0]), float(v[1]), float(v[2]), 1.0f);                                  \
+  }                                                                                                \
+  void GLAPIENTRY TexCoord4##S##v(const T* v) {                                                    \
+    if (v) texcoord(float(v[0]), float(v[1]), float(v[2]), float(v[3]));                           \
+  }
+PINEDA_TEXCOORD(GLshort, s)
+PINEDA_TEXCOORD(GLint, i)
+PINEDA_TEXCOORD(GLfloat, f)
+PINEDA_TEXCOORD(GLdouble, d)
+#undef PINEDA_TEXCOORD
+
+#define PINEDA_RECT(T, S)                                                                          \
+  void GLAPIENTRY Rect##S(T x1, T y1, T x2, T y2) { rect(x1, y1, x2, y2); }                        \
+  void GLAPIENTRY Rect##S##v(const T* a, const T* b) {                                             \
+    if (a && b) rect(a[0], a[1], b[0], b[1]);                                                      \
+  }
+PINEDA_RECT(GLshort, s)
+PINEDA_RECT(GLint, i)
+PINEDA_RECT(GLfloat, f)
+PINEDA_RECT(GLdouble, d)
+#undef PINEDA_RECT
+
+void GLAPIENTRY EdgeFlag(GLboolean flag) {
+  Context* ctx = current_context();
+  if (ctx == nullptr) return;
+  ctx->cur_edge = flag != GL_FALSE;
+}
+
+void GLAPIENTRY EdgeFlagv(const GLboolean* flag) {
+  if (flag) EdgeFlag(*flag);
+}
+
+} // namespace exec
+} // namespace pineda

@@ -1,0 +1,81 @@
+// Blending state (GL 2.1 §4.1.8; BlendFuncSeparate, BlendColor and BlendEquation are core
+// since GL 1.4).
+#include "core/api_util.h"
+#include "dispatch.h"
+
+namespace pineda {
+
+namespace {
+
+bool valid_factor(GLenum f, bool is_src) {
+  switch (f) {
+  case GL_ZERO:
+  case GL_ONE:
+  case GL_SRC_COLOR:
+  case GL_ONE_MINUS_SRC_COLOR:
+  case GL_DST_COLOR:
+  case GL_ONE_MINUS_DST_COLOR:
+  case GL_SRC_ALPHA:
+  case GL_ONE_MINUS_SRC_ALPHA:
+  case GL_DST_ALPHA:
+  case GL_ONE_MINUS_DST_ALPHA:
+  case GL_CONSTANT_COLOR:
+  case GL_ONE_MINUS_CONSTANT_COLOR:
+  case GL_CONSTANT_ALPHA:
+  case GL_ONE_MINUS_CONSTANT_ALPHA: return true;
+  // GL 2.1 Table 4.2: SRC_ALPHA_SATURATE is a source factor only.
+  case GL_SRC_ALPHA_SATURATE: return is_src;
+  default: return false;
+  }
+}
+
+void set_blend_func(const char* func, GLenum src_rgb, GLenum dst_rgb, GLenum src_a,
+                    GLenum dst_a) {
+  PINEDA_CTX_OUTSIDE(func);
+  if (!valid_factor(src_rgb, true)) return record_error(ctx, GL_INVALID_ENUM, func, src_rgb);
+  if (!valid_factor(dst_rgb, false)) return record_error(ctx, GL_INVALID_ENUM, func, dst_rgb);
+  if (!valid_factor(src_a, true)) return record_error(ctx, GL_INVALID_ENUM, func, src_a);
+  if (!valid_factor(dst_a, false)) return record_error(ctx, GL_INVALID_ENUM, func, dst_a);
+  ctx->blend_src_rgb = src_rgb, ctx->blend_dst_rgb = dst_rgb;
+  ctx->blend_src_a = src_a, ctx->blend_dst_a = dst_a;
+  mark_dirty(ctx, kDirtyFragment);
+}
+
+} // namespace
+
+namespace exec {
+
+void GLAPIENTRY BlendFunc(GLenum src, GLenum dst) {
+  set_blend_func("glBlendFunc", src, dst, src, dst);
+}
+
+void GLAPIENTRY BlendFuncSeparate(GLenum src_rgb, GLenum dst_rgb, GLenum src_a, GLenum dst_a) {
+  set_blend_func("glBlendFuncSeparate", src_rgb, dst_rgb, src_a, dst_a);
+}
+
+void GLAPIENTRY BlendEquation(GLenum mode) {
+  PINEDA_CTX_OUTSIDE("glBlendEquation");
+  switch (mode) {
+  case GL_FUNC_ADD:
+  case GL_FUNC_SUBTRACT:
+  case GL_FUNC_REVERSE_SUBTRACT:
+  case GL_MIN:
+  case GL_MAX: break;
+  default: record_error(ctx, GL_INVALID_ENUM, "glBlendEquation", mode); return;
+  }
+  ctx->blend_eq_rgb = ctx->blend_eq_a = mode;
+  mark_dirty(ctx, kDirtyFragment);
+}
+
+void GLAPIENTRY BlendColor(GLclampf r, GLclampf g, GLclampf b, GLclampf a) {
+  PINEDA_CTX_OUTSIDE("glBlendColor");
+  // GL 2.1 §4.1.8: the constant colour is clamped to [0,1] when specified.
+  ctx->blend_color[0] = clampf01(r);
+  ctx->blend_color[1] = clampf01(g);
+  ctx->blend_color[2] = clampf01(b);
+  ctx->blend_color[3] = clampf01(a);
+  mark_dirty(ctx, kDirtyFragment);
+}
+
+} // namespace exec
+} // namespace pineda

@@ -1,0 +1,216 @@
+// Framebuffer control and clears (GL 2.1 §4.2), pixel storage (§3.6.1) and glReadPixels
+// (§4.3.2).
+#include "core/api_util.h"
+#include "dispatch.h"
+#include "framebuffer/read_pixels.h"
+
+namespace pineda {
+
+namespace {
+
+bool is_packed_type(GLenum type) {
+  switch (type) {
+  case GL_UNSIGNED_BYTE_3_3_2:
+  case GL_UNSIGNED_BYTE_2_3_3_REV:
+  case GL_UNSIGNED_SHORT_5_6_5:
+  case GL_UNSIGNED_SHORT_5_6_5_REV:
+  case GL_UNSIGNED_SHORT_4_4_4_4:
+  case GL_UNSIGNED_SHORT_4_4_4_4_REV:
+  case GL_UNSIGNED_SHORT_5_5_5_1:
+  case GL_UNSIGNED_SHORT_1_5_5_5_REV:
+  case GL_UNSIGNED_INT_8_8_8_8:
+  case GL_UNSIGNED_INT_8_8_8_8_REV:
+  case GL_UNSIGNED_INT_10_10_10_2:
+  case GL_UNSIGNED_INT_2_10_10_10_REV: return true;
+  default: return false;
+  }
+}
+
+bool is_read_type(GLenum type) {
+  switch (type) {
+  case GL_UNSIGNED_BYTE:
+  case GL_BYTE:
+  case GL_UNSIGNED_SHORT:
+  case GL_SHORT:
+  case GL_UNSIGNED_INT:
+  case GL_INT:
+  case GL_FLOAT:
+  case GL_BITMAP: return true;
+  default: return is_packed_type(type);
+  }
+}
+
+// Components a packed type holds (GL 2.1 Table 3.8): the format must have as many.
+int packed_components(GLenum type) {
+  switch (type) {
+  case GL_UNSIGNED_BYTE_3_3_2:
+  case GL_UNSIGNED_BYTE_2_3_3_REV:
+  case GL_UNSIGNED_SHORT_5_6_5:
+  case GL_UNSIGNED_SHORT_5_6_5_REV: return 3;
+  default: return 4;
+  }
+}
+
+int format_components(GLenum format) {
+  switch (format) {
+  case GL_RGBA:
+  case GL_BGRA: return 4;
+  case GL_RGB:
+  case GL_BGR: return 3;
+  case GL_LUMINANCE_ALPHA: return 2;
+  default: return 1;
+  }
+}
+
+bool is_read_format(GLenum format) {
+  switch (format) {
+  case GL_COLOR_INDEX:
+  case GL_STENCIL_INDEX:
+  case GL_DEPTH_COMPONENT:
+  case GL_RED:
+  case GL_GREEN:
+  case GL_BLUE:
+  case GL_ALPHA:
+  case GL_RGB:
+  case GL_RGBA:
+  case GL_BGR:
+  case GL_BGRA:
+  case GL_LUMINANCE:
+  case GL_LUMINANCE_ALPHA: return true;
+  default: return false;
+  }
+}
+
+// GL 2.1 §3.6.1 glPixelStore: the parameter and its value check.
+void pixel_store(const char* func, GLenum pname, double value) {
+  PINEDA_CTX_OUTSIDE(func);
+  PixelStore* ps = nullptr;
+  GLenum base = pname;
+  if (pname >= GL_PACK_SWAP_BYTES && pname <= GL_PACK_ALIGNMENT) {
+    ps = &ctx->pack;
+    base = pname - GL_PACK_SWAP_BYTES + GL_UNPACK_SWAP_BYTES;
+  } else if (pname >= GL_UNPACK_SWAP_BYTES && pname <= GL_UNPACK_ALIGNMENT) {
+    ps = &ctx->unpack;
+  } else if (pname == GL_PACK_IMAGE_HEIGHT || pname == GL_PACK_SKIP_IMAGES) {
+    ps = &ctx->pack;
+  } else if (pname == GL_UNPACK_IMAGE_HEIGHT || pname == GL_UNPACK_SKIP_IMAGES) {
+    ps = &ctx->unpack;
+  } else {
+    record_error(ctx, GL_INVALID_ENUM, func, pname);
+    return;
+  }
+  // GL 2.1 §3.6.1: integer parameters from a float value are rounded to the nearest integer.
+  const double rounded = value < 0 ? -static_cast<double>(static_cast<long long>(-value + 0.5))
+                                   : static_cast<double>(static_cast<long long>(value + 0.5));
+  const int iv = rounded > 2147483647.0 ? 2147483647 : static_cast<int>(rounded);
+  switch (base) {
+  case GL_UNPACK_SWAP_BYTES: ps->swap_bytes = value != 0.0; return;
+  case GL_UNPACK_LSB_FIRST: ps->lsb_first = value != 0.0; return;
+  default: break;
+  }
+  if (iv < 0) {
+    record_error(ctx, GL_INVALID_VALUE, func);
+    return;
+  }
+  switch (base) {
+  case GL_UNPACK_ROW_LENGTH: ps->row_length = iv; break;
+  case GL_UNPACK_SKIP_ROWS: ps->skip_rows = iv; break;
+  case GL_UNPACK_SKIP_PIXELS: ps->skip_pixels = iv; break;
+  case GL_UNPACK_ALIGNMENT:
+    if (iv != 1 && iv != 2 && iv != 4 && iv != 8) {
+      record_error(ctx, GL_INVALID_VALUE, func);
+      return;
+    }
+    ps->alignment = iv;
+    break;
+  case GL_PACK_IMAGE_HEIGHT:
+  case GL_UNPACK_IMAGE_HEIGHT: ps->image_height = iv; break;
+  case GL_PACK_SKIP_IMAGES:
+  case GL_UNPACK_SKIP_IMAGES: ps->skip_images = iv; break;
+  default: break;
+  }
+}
+
+} // namespace
+
+namespace exec {
+
+void GLAPIENTRY Clear(GLbitfield mask) {
+  PINEDA_CTX_OUTSIDE("glClear");
+  constexpr GLbitfield kAll =
+      GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT | GL_ACCUM_BUFFER_BIT;
+  if ((mask & ~kAll) != 0) {
+    record_error(ctx, GL_INVALID_VALUE, "glClear");
+    return;
+  }
+  if (ctx->fb.color == nullptr) return;
+  ClearState cs;
+  for (int i = 0; i < 4; ++i) {
+    cs.color[i] = ctx->clear_color[i];
+    cs.color_write[i] = ctx->color_mask[i];
+  }
+  cs.depth = ctx->clear_depth;
+  cs.depth_write = ctx->depth_mask;
+  cs.stencil = ctx->clear_stencil;
+  cs.stencil_writemask = ctx->stencil_writemask;
+  // GL 2.1 §4.2.3: clearing a buffer that does not exist has no effect.
+  GLbitfield m = mask & GL_COLOR_BUFFER_BIT;
+  if (ctx->fb.depth != nullptr) m |= mask & GL_DEPTH_BUFFER_BIT;
+  if (ctx->fb.stencil != nullptr) m |= mask & GL_STENCIL_BUFFER_BIT;
+  if (m != 0) clear_buffers(ctx->fb, cs, m);
+}
+
+void GLAPIENTRY ClearColor(GLclampf r, GLclampf g, GLclampf b, GLclampf a) {
+  PINEDA_CTX_OUTSIDE("glClearColor");
+  ctx->clear_color[0] = clampf01(r);
+  ctx->clear_color[1] = clampf01(g);
+  ctx->clear_color[2] = clampf01(b);
+  ctx->clear_color[3] = clampf01(a);
+}
+
+void GLAPIENTRY ClearStencil(GLint s) {
+  PINEDA_CTX_OUTSIDE("glClearStencil");
+  ctx->clear_stencil = s;
+}
+
+void GLAPIENTRY ColorMask(GLboolean r, GLboolean g, GLboolean b, GLboolean a) {
+  PINEDA_CTX_OUTSIDE("glColorMask");
+  const bool m[4] = {r != GL_FALSE, g != GL_FALSE, b != GL_FALSE, a != GL_FALSE};
+  for (int i = 0; i < 4; ++i) ctx->color_mask[i] = m[i];
+  mark_dirty(ctx, kDirtyFragment);
+}
+
+void GLAPIENTRY PixelStorei(GLenum pname, GLint param) {
+  pixel_store("glPixelStorei", pname, param);
+}
+void GLAPIENTRY PixelStoref(GLenum pname, GLfloat param) {
+  pixel_store("glPixelStoref", pname, param);
+}
+
+void GLAPIENTRY ReadPixels(GLint x, GLint y, GLsizei w, GLsizei h, GLenum format, GLenum type,
+                           void* pixels) {
+  PINEDA_CTX_OUTSIDE("glReadPixels");
+  if (w < 0 || h < 0) return record_error(ctx, GL_INVALID_VALUE, "glReadPixels");
+  if (!is_read_format(format)) return record_error(ctx, GL_INVALID_ENUM, "glReadPixels", format);
+  if (!is_read_type(type)) return record_error(ctx, GL_INVALID_ENUM, "glReadPixels", type);
+  // GL 2.1 §3.6.4: BITMAP only goes with COLOR_INDEX or STENCIL_INDEX.
+  if (type == GL_BITMAP && format != GL_COLOR_INDEX && format != GL_STENCIL_INDEX)
+    return record_error(ctx, GL_INVALID_ENUM, "glReadPixels", type);
+  // GL 2.1 §3.6.4: a packed type needs a format with matching component count.
+  if (is_packed_type(type) && (format_components(format) != packed_components(type) ||
+                               format == GL_LUMINANCE_ALPHA))
+    return record_error(ctx, GL_INVALID_OPERATION, "glReadPixels");
+  // GL 2.1 §4.3.2: COLOR_INDEX in RGBA mode, and depth/stencil reads with no such buffer,
+  // are INVALID_OPERATION.
+  if (format == GL_COLOR_INDEX) return record_error(ctx, GL_INVALID_OPERATION, "glReadPixels");
+  if (format == GL_DEPTH_COMPONENT && ctx->fb.depth == nullptr)
+    return record_error(ctx, GL_INVALID_OPERATION, "glReadPixels");
+  if (format == GL_STENCIL_INDEX && ctx->fb.stencil == nullptr)
+    return record_error(ctx, GL_INVALID_OPERATION, "glReadPixels");
+  if (type == GL_BITMAP) return record_error(ctx, GL_INVALID_OPERATION, "glReadPixels");
+  if (pixels == nullptr || w == 0 || h == 0 || ctx->fb.color == nullptr) return;
+  read_pixels(ctx->fb, x, y, w, h, format, type, ctx->pack, pixels);
+}
+
+} // namespace exec
+} // namespace pineda

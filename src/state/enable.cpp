@@ -1,0 +1,130 @@
+// glEnable/glDisable/glIsEnabled, client-state enables, hints, glFlush/glFinish
+// (GL 2.1 §2.11.4, §2.8, §5.6, §5.5). Capabilities Pineda does not implement yet give
+// GL_INVALID_ENUM rather than being silently accepted.
+#include "core/api_util.h"
+#include "dispatch.h"
+
+namespace pineda {
+
+namespace {
+
+// The boolean behind a server-side capability and what it invalidates; nullptr when the
+// capability is not implemented.
+bool* capability(Context* ctx, GLenum cap, uint32_t* dirty) {
+  *dirty = 0;
+  if (cap >= GL_CLIP_PLANE0 && cap < GL_CLIP_PLANE0 + kMaxClipPlanes) {
+    *dirty = kDirtyClipPlanes;
+    return &ctx->clip_enabled[cap - GL_CLIP_PLANE0];
+  }
+  switch (cap) {
+  case GL_CULL_FACE: *dirty = kDirtyPolygon; return &ctx->cull_enabled;
+  case GL_DEPTH_TEST: *dirty = kDirtyFragment; return &ctx->depth_test;
+  case GL_BLEND: *dirty = kDirtyFragment; return &ctx->blend;
+  // GL 2.1 §4.1.9: dithering may be a no-op; the flag is still state.
+  case GL_DITHER: return &ctx->dither;
+  // Normals only feed lighting and texgen; the flags are kept for queries and for them.
+  case GL_NORMALIZE: return &ctx->normalize;
+  case GL_RESCALE_NORMAL: return &ctx->rescale_normal;
+  default: return nullptr;
+  }
+}
+
+ClientArray* client_array(Context* ctx, GLenum array) {
+  switch (array) {
+  case GL_VERTEX_ARRAY: return &ctx->arrays.vertex;
+  case GL_COLOR_ARRAY: return &ctx->arrays.color;
+  case GL_NORMAL_ARRAY: return &ctx->arrays.normal;
+  case GL_TEXTURE_COORD_ARRAY: return &ctx->arrays.texcoord[ctx->client_active_texture];
+  case GL_EDGE_FLAG_ARRAY: return &ctx->arrays.edgeflag;
+  default: return nullptr;
+  }
+}
+
+void set_capability(const char* func, GLenum cap, bool value) {
+  PINEDA_CTX_OUTSIDE(func);
+  uint32_t dirty = 0;
+  bool* flag = capability(ctx, cap, &dirty);
+  if (flag == nullptr) {
+    record_error(ctx, GL_INVALID_ENUM, func, cap);
+    return;
+  }
+  if (*flag == value) return;
+  *flag = value;
+  mark_dirty(ctx, dirty);
+}
+
+void set_client_state(const char* func, GLenum array, bool value) {
+  PINEDA_CTX_OUTSIDE(func);
+  ClientArray* a = client_array(ctx, array);
+  if (a == nullptr) {
+    record_error(ctx, GL_INVALID_ENUM, func, array);
+    return;
+  }
+  a->enabled = value;
+}
+
+} // namespace
+
+// Used by glGet for GL_<cap> queries, which return the same value as glIsEnabled.
+bool query_enabled(Context* ctx, GLenum cap, bool* value) {
+  uint32_t dirty = 0;
+  if (bool* flag = capability(ctx, cap, &dirty)) {
+    *value = *flag;
+    return true;
+  }
+  if (ClientArray* a = client_array(ctx, cap)) {
+    *value = a->enabled;
+    return true;
+  }
+  return false;
+}
+
+namespace exec {
+
+void GLAPIENTRY Enable(GLenum cap) { set_capability("glEnable", cap, true); }
+void GLAPIENTRY Disable(GLenum cap) { set_capability("glDisable", cap, false); }
+
+GLboolean GLAPIENTRY IsEnabled(GLenum cap) {
+  Context* ctx = outside_begin_end("glIsEnabled");
+  if (ctx == nullptr) return GL_FALSE;
+  bool value = false;
+  if (!query_enabled(ctx, cap, &value)) {
+    record_error(ctx, GL_INVALID_ENUM, "glIsEnabled", cap);
+    return GL_FALSE;
+  }
+  return value ? GL_TRUE : GL_FALSE;
+}
+
+void GLAPIENTRY EnableClientState(GLenum array) {
+  set_client_state("glEnableClientState", array, true);
+}
+void GLAPIENTRY DisableClientState(GLenum array) {
+  set_client_state("glDisableClientState", array, false);
+}
+
+void GLAPIENTRY Hint(GLenum target, GLenum mode) {
+  PINEDA_CTX_OUTSIDE("glHint");
+  if (mode != GL_FASTEST && mode != GL_NICEST && mode != GL_DONT_CARE) {
+    record_error(ctx, GL_INVALID_ENUM, "glHint", mode);
+    return;
+  }
+  GLenum* slot = nullptr;
+  switch (target) {
+  case GL_PERSPECTIVE_CORRECTION_HINT: slot = &ctx->hint_perspective; break;
+  case GL_POINT_SMOOTH_HINT: slot = &ctx->hint_point_smooth; break;
+  case GL_LINE_SMOOTH_HINT: slot = &ctx->hint_line_smooth; break;
+  case GL_POLYGON_SMOOTH_HINT: slot = &ctx->hint_polygon_smooth; break;
+  case GL_FOG_HINT: slot = &ctx->hint_fog; break;
+  case GL_GENERATE_MIPMAP_HINT: slot = &ctx->hint_generate_mipmap; break;
+  case GL_TEXTURE_COMPRESSION_HINT: slot = &ctx->hint_texture_compression; break;
+  default: record_error(ctx, GL_INVALID_ENUM, "glHint", target); return;
+  }
+  *slot = mode;
+}
+
+// Rendering is synchronous: every command has completed when it returns (GL 2.1 §5.5).
+void GLAPIENTRY Flush() { outside_begin_end("glFlush"); }
+void GLAPIENTRY Finish() { outside_begin_end("glFinish"); }
+
+} // namespace exec
+} // namespace pineda

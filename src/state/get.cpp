@@ -1,0 +1,360 @@
+// State queries (GL 2.1 §6.1): glGetError, glGetString, glGet{Boolean,Integer,Float,Double}v,
+// glGetPointerv. One table-like switch produces typed values; the conversions between types
+// follow §6.1.2.
+#include <cmath>
+#include <limits>
+
+#include "core/api_util.h"
+#include "dispatch.h"
+
+namespace pineda {
+
+bool query_enabled(Context* ctx, GLenum cap, bool* value); // enable.cpp
+
+namespace {
+
+enum class Kind { Int, Bool, Float, Normalized };
+
+// Up to 16 values of one kind. Normalized values (colours, depth range, depth clear value,
+// normals) map to the full integer range in GetIntegerv (§6.1.2).
+struct Values {
+  Kind kind = Kind::Int;
+  int n = 0;
+  double v[16] = {};
+  void add(double x) { v[n++] = x; }
+};
+
+void put_matrix(Values& out, const glm::mat4& m, bool transpose) {
+  out.kind = Kind::Float;
+  for (int c = 0; c < 4; ++c)
+    for (int r = 0; r < 4; ++r) out.add(transpose ? m[r][c] : m[c][r]);
+}
+
+const ClientArray* array_for(Context* ctx, GLenum pname) {
+  switch (pname) {
+  case GL_VERTEX_ARRAY_SIZE:
+  case GL_VERTEX_ARRAY_TYPE:
+  case GL_VERTEX_ARRAY_STRIDE:
+  case GL_VERTEX_ARRAY_BUFFER_BINDING: return &ctx->arrays.vertex;
+  case GL_COLOR_ARRAY_SIZE:
+  case GL_COLOR_ARRAY_TYPE:
+  case GL_COLOR_ARRAY_STRIDE:
+  case GL_COLOR_ARRAY_BUFFER_BINDING: return &ctx->arrays.color;
+  case GL_NORMAL_ARRAY_TYPE:
+  case GL_NORMAL_ARRAY_STRIDE:
+  case GL_NORMAL_ARRAY_BUFFER_BINDING: return &ctx->arrays.normal;
+  case GL_TEXTURE_COORD_ARRAY_SIZE:
+  case GL_TEXTURE_COORD_ARRAY_TYPE:
+  case GL_TEXTURE_COORD_ARRAY_STRIDE:
+  case GL_TEXTURE_COORD_ARRAY_BUFFER_BINDING:
+    return &ctx->arrays.texcoord[ctx->client_active_texture];
+  case GL_EDGE_FLAG_ARRAY_STRIDE:
+  case GL_EDGE_FLAG_ARRAY_BUFFER_BINDING: return &ctx->arrays.edgeflag;
+  default: return nullptr;
+  }
+}
+
+// Fill `out` for pname; false when pname is not a state Pineda has.
+bool get_values(Context* ctx, GLenum pname, Values& out) {
+  bool enabled = false;
+  if (query_enabled(ctx, pname, &enabled)) {
+    out.kind = Kind::Bool;
+    out.add(enabled ? 1 : 0);
+    return true;
+  }
+  if (const ClientArray* a = array_for(ctx, pname)) {
+    switch (pname) {
+    case GL_VERTEX_ARRAY_SIZE:
+    case GL_COLOR_ARRAY_SIZE:
+    case GL_TEXTURE_COORD_ARRAY_SIZE: out.add(a->size); break;
+    case GL_VERTEX_ARRAY_TYPE:
+    case GL_COLOR_ARRAY_TYPE:
+    case GL_NORMAL_ARRAY_TYPE:
+    case GL_TEXTURE_COORD_ARRAY_TYPE: out.add(a->type); break;
+    case GL_VERTEX_ARRAY_STRIDE:
+    case GL_COLOR_ARRAY_STRIDE:
+    case GL_NORMAL_ARRAY_STRIDE:
+    case GL_TEXTURE_COORD_ARRAY_STRIDE:
+    case GL_EDGE_FLAG_ARRAY_STRIDE: out.add(a->stride); break;
+    default: out.add(a->buffer); break;
+    }
+    return true;
+  }
+  const Framebuffer& fb = ctx->fb;
+  switch (pname) {
+  // Current values (Table 6.5).
+  case GL_CURRENT_COLOR:
+    out.kind = Kind::Normalized;
+    for (float c : ctx->cur_color) out.add(c);
+    return true;
+  case GL_CURRENT_NORMAL:
+    out.kind = Kind::Normalized;
+    for (float c : ctx->cur_normal) out.add(c);
+    return true;
+  case GL_CURRENT_TEXTURE_COORDS:
+    out.kind = Kind::Float;
+    for (float c : ctx->cur_tex[ctx->active_texture]) out.add(c);
+    return true;
+  case GL_EDGE_FLAG:
+    out.kind = Kind::Bool;
+    out.add(ctx->cur_edge ? 1 : 0);
+    return true;
+
+  // Transformation (Table 6.6).
+  case GL_MATRIX_MODE: out.add(ctx->matrix_mode); return true;
+  case GL_MODELVIEW_MATRIX: put_matrix(out, ctx->modelview.top(), false); return true;
+  case GL_PROJECTION_MATRIX: put_matrix(out, ctx->projection.top(), false); return true;
+  case GL_TEXTURE_MATRIX:
+    put_matrix(out, ctx->texture[ctx->active_texture].top(), false);
+    return true;
+  case GL_TRANSPOSE_MODELVIEW_MATRIX: put_matrix(out, ctx->modelview.top(), true); return true;
+  case GL_TRANSPOSE_PROJECTION_MATRIX:
+    put_matrix(out, ctx->projection.top(), true);
+    return true;
+  case GL_TRANSPOSE_TEXTURE_MATRIX:
+    put_matrix(out, ctx->texture[ctx->active_texture].top(), true);
+    return true;
+  case GL_MODELVIEW_STACK_DEPTH: out.add(double(ctx->modelview.stack.size())); return true;
+  case GL_PROJECTION_STACK_DEPTH: out.add(double(ctx->projection.stack.size())); return true;
+  case GL_TEXTURE_STACK_DEPTH:
+    out.add(double(ctx->texture[ctx->active_texture].stack.size()));
+    return true;
+  case GL_VIEWPORT:
+    out.add(ctx->vp_x), out.add(ctx->vp_y), out.add(ctx->vp_w), out.add(ctx->vp_h);
+    return true;
+  case GL_DEPTH_RANGE:
+    out.kind = Kind::Normalized;
+    out.add(ctx->depth_near), out.add(ctx->depth_far);
+    return true;
+
+  // Rasterization (Tables 6.11-6.12).
+  case GL_CULL_FACE_MODE: out.add(ctx->cull_face); return true;
+  case GL_FRONT_FACE: out.add(ctx->front_face); return true;
+  case GL_POLYGON_MODE: out.add(ctx->polygon_mode[0]), out.add(ctx->polygon_mode[1]); return true;
+  case GL_SHADE_MODEL: out.add(ctx->shade_model); return true;
+  case GL_POINT_SIZE:
+    out.kind = Kind::Float;
+    out.add(ctx->point_size);
+    return true;
+  case GL_LINE_WIDTH:
+    out.kind = Kind::Float;
+    out.add(ctx->line_width);
+    return true;
+
+  // Pixel operations and framebuffer control (Tables 6.20-6.22).
+  case GL_DEPTH_FUNC: out.add(ctx->depth_func); return true;
+  case GL_DEPTH_WRITEMASK:
+    out.kind = Kind::Bool;
+    out.add(ctx->depth_mask ? 1 : 0);
+    return true;
+  case GL_DEPTH_CLEAR_VALUE:
+    out.kind = Kind::Normalized;
+    out.add(ctx->clear_depth);
+    return true;
+  case GL_COLOR_CLEAR_VALUE:
+    out.kind = Kind::Normalized;
+    for (float c : ctx->clear_color) out.add(c);
+    return true;
+  case GL_COLOR_WRITEMASK:
+    out.kind = Kind::Bool;
+    for (bool b : ctx->color_mask) out.add(b ? 1 : 0);
+    return true;
+  case GL_STENCIL_CLEAR_VALUE: out.add(ctx->clear_stencil); return true;
+  case GL_BLEND_SRC:
+  case GL_BLEND_SRC_RGB: out.add(ctx->blend_src_rgb); return true;
+  case GL_BLEND_DST:
+  case GL_BLEND_DST_RGB: out.add(ctx->blend_dst_rgb); return true;
+  case GL_BLEND_SRC_ALPHA: out.add(ctx->blend_src_a); return true;
+  case GL_BLEND_DST_ALPHA: out.add(ctx->blend_dst_a); return true;
+  case GL_BLEND_EQUATION: out.add(ctx->blend_eq_rgb); return true;
+  case GL_BLEND_COLOR:
+    out.kind = Kind::Normalized;
+    for (float c : ctx->blend_color) out.add(c);
+    return true;
+
+  // Hints (Table 6.38).
+  case GL_PERSPECTIVE_CORRECTION_HINT: out.add(ctx->hint_perspective); return true;
+  case GL_POINT_SMOOTH_HINT: out.add(ctx->hint_point_smooth); return true;
+  case GL_LINE_SMOOTH_HINT: out.add(ctx->hint_line_smooth); return true;
+  case GL_POLYGON_SMOOTH_HINT: out.add(ctx->hint_polygon_smooth); return true;
+  case GL_FOG_HINT: out.add(ctx->hint_fog); return true;
+  case GL_GENERATE_MIPMAP_HINT: out.add(ctx->hint_generate_mipmap); return true;
+  case GL_TEXTURE_COMPRESSION_HINT: out.add(ctx->hint_texture_compression); return true;
+
+  // Pixel store (Table 6.23).
+  case GL_PACK_SWAP_BYTES: out.kind = Kind::Bool; out.add(ctx->pack.swap_bytes); return true;
+  case GL_PACK_LSB_FIRST: out.kind = Kind::Bool; out.add(ctx->pack.lsb_first); return true;
+  case GL_PACK_ROW_LENGTH: out.add(ctx->pack.row_length); return true;
+  case GL_PACK_SKIP_ROWS: out.add(ctx->pack.skip_rows); return true;
+  case GL_PACK_SKIP_PIXELS: out.add(ctx->pack.skip_pixels); return true;
+  case GL_PACK_ALIGNMENT: out.add(ctx->pack.alignment); return true;
+  case GL_PACK_IMAGE_HEIGHT: out.add(ctx->pack.image_height); return true;
+  case GL_PACK_SKIP_IMAGES: out.add(ctx->pack.skip_images); return true;
+  case GL_UNPACK_SWAP_BYTES: out.kind = Kind::Bool; out.add(ctx->unpack.swap_bytes); return true;
+  case GL_UNPACK_LSB_FIRST: out.kind = Kind::Bool; out.add(ctx->unpack.lsb_first); return true;
+  case GL_UNPACK_ROW_LENGTH: out.add(ctx->unpack.row_length); return true;
+  case GL_UNPACK_SKIP_ROWS: out.add(ctx->unpack.skip_rows); return true;
+  case GL_UNPACK_SKIP_PIXELS: out.add(ctx->unpack.skip_pixels); return true;
+  case GL_UNPACK_ALIGNMENT: out.add(ctx->unpack.alignment); return true;
+  case GL_UNPACK_IMAGE_HEIGHT: out.add(ctx->unpack.image_height); return true;
+  case GL_UNPACK_SKIP_IMAGES: out.add(ctx->unpack.skip_images); return true;
+
+  // Vertex arrays and buffer objects (Tables 6.7-6.9).
+  case GL_ARRAY_BUFFER_BINDING: out.add(ctx->array_buffer); return true;
+  case GL_ELEMENT_ARRAY_BUFFER_BINDING: out.add(ctx->element_array_buffer); return true;
+  case GL_CLIENT_ATTRIB_STACK_DEPTH: out.add(double(ctx->client_attrib_stack.size())); return true;
+
+  // Framebuffer (Table 6.34 / 6.35).
+  case GL_RED_BITS:
+  case GL_GREEN_BITS:
+  case GL_BLUE_BITS: out.add(fb.color ? 8 : 0); return true;
+  case GL_ALPHA_BITS: out.add(fb.color ? fb.alpha_bits : 0); return true;
+  case GL_DEPTH_BITS: out.add(fb.depth ? fb.depth_bits : 0); return true;
+  case GL_STENCIL_BITS: out.add(fb.stencil ? fb.stencil_bits : 0); return true;
+  case GL_ACCUM_RED_BITS:
+  case GL_ACCUM_GREEN_BITS:
+  case GL_ACCUM_BLUE_BITS:
+  case GL_ACCUM_ALPHA_BITS:
+  case GL_AUX_BUFFERS:
+  case GL_INDEX_BITS: out.add(0); return true;
+  case GL_RGBA_MODE: out.kind = Kind::Bool; out.add(1); return true;
+  case GL_INDEX_MODE:
+  case GL_DOUBLEBUFFER:
+  case GL_STEREO: out.kind = Kind::Bool; out.add(0); return true;
+
+  // Implementation limits (Tables 6.36-6.37).
+  case GL_SUBPIXEL_BITS: out.add(kSubpixelBits); return true;
+  case GL_MAX_VIEWPORT_DIMS: out.add(kMaxViewportDim), out.add(kMaxViewportDim); return true;
+  case GL_MAX_CLIP_PLANES: out.add(kMaxClipPlanes); return true;
+  case GL_MAX_MODELVIEW_STACK_DEPTH: out.add(double(kModelviewStackDepth)); return true;
+  case GL_MAX_PROJECTION_STACK_DEPTH: out.add(double(kProjectionStackDepth)); return true;
+  case GL_MAX_TEXTURE_STACK_DEPTH: out.add(double(kTextureStackDepth)); return true;
+  case GL_MAX_CLIENT_ATTRIB_STACK_DEPTH: out.add(double(kClientAttribStackDepth)); return true;
+  // GL 1.2 DrawRangeElements recommendations: Pineda has no such limit; report large values.
+  case GL_MAX_ELEMENTS_VERTICES:
+  case GL_MAX_ELEMENTS_INDICES: out.add(1 << 20); return true;
+  // Points and lines are rasterized at size/width 1 only until wide ones are implemented.
+  case GL_ALIASED_POINT_SIZE_RANGE:
+  case GL_ALIASED_LINE_WIDTH_RANGE:
+  case GL_POINT_SIZE_RANGE:
+  case GL_LINE_WIDTH_RANGE:
+    out.kind = Kind::Float;
+    out.add(1), out.add(1);
+    return true;
+  case GL_POINT_SIZE_GRANULARITY:
+  case GL_LINE_WIDTH_GRANULARITY:
+    out.kind = Kind::Float;
+    out.add(0);
+    return true;
+  default: return false;
+  }
+}
+
+// Shared front half of every glGet*v: context, Begin/End check, lookup, error.
+bool lookup(const char* func, GLenum pname, Values& out, Context** ctx_out) {
+  Context* ctx = outside_begin_end(func);
+  if (ctx == nullptr) return false;
+  *ctx_out = ctx;
+  if (!get_values(ctx, pname, out)) {
+    record_error(ctx, GL_INVALID_ENUM, func, pname);
+    return false;
+  }
+  return true;
+}
+
+// §6.1.2: floating-point to integer conversion.
+GLint to_int(const Values& vals, int i) {
+  const double x = vals.v[i];
+  if (vals.kind == Kind::Normalized) {
+    // 1.0 maps to the most positive integer, -1.0 to the most negative.
+    const double scaled = x * 2147483647.0;
+    if (scaled >= 2147483647.0) return std::numeric_limits<GLint>::max();
+    if (scaled <= -2147483648.0) return std::numeric_limits<GLint>::min();
+    return static_cast<GLint>(std::llround(scaled));
+  }
+  if (!(x == x)) return 0;
+  if (x >= 2147483647.0) return std::numeric_limits<GLint>::max();
+  if (x <= -2147483648.0) return std::numeric_limits<GLint>::min();
+  return static_cast<GLint>(std::llround(x));
+}
+
+} // namespace
+
+namespace exec {
+
+GLenum GLAPIENTRY GetError() {
+  Context* ctx = current_context();
+  if (ctx == nullptr) return GL_NO_ERROR;
+  if (ctx->begin_mode != kOutsideBeginEnd) {
+    record_error(ctx, GL_INVALID_OPERATION, "glGetError");
+    return GL_NO_ERROR;
+  }
+  const GLenum e = ctx->error;
+  ctx->error = GL_NO_ERROR;
+  return e;
+}
+
+const GLubyte* GLAPIENTRY GetString(GLenum name) {
+  Context* ctx = outside_begin_end("glGetString");
+  if (ctx == nullptr) return nullptr;
+  const char* s = nullptr;
+  switch (name) {
+  case GL_VENDOR: s = "Pineda"; break;
+  case GL_RENDERER: s = "Pineda (CPU rasterizer)"; break;
+  // Honest version (GL 2.1 §6.1.11): the fixed-function feature set is not complete yet, so
+  // only the GL 1.1 number is claimed, with the gaps spelled out.
+  case GL_VERSION:
+    s = "1.1 Pineda 0.1 (subset: no lighting, texturing, fog, stencil or display lists yet)";
+    break;
+  case GL_EXTENSIONS: s = ""; break;
+  default: record_error(ctx, GL_INVALID_ENUM, "glGetString", name); return nullptr;
+  }
+  return reinterpret_cast<const GLubyte*>(s);
+}
+
+void GLAPIENTRY GetBooleanv(GLenum pname, GLboolean* params) {
+  Values v;
+  Context* ctx = nullptr;
+  if (!lookup("glGetBooleanv", pname, v, &ctx) || params == nullptr) return;
+  for (int i = 0; i < v.n; ++i) params[i] = v.v[i] != 0.0 ? GL_TRUE : GL_FALSE;
+}
+
+void GLAPIENTRY GetIntegerv(GLenum pname, GLint* params) {
+  Values v;
+  Context* ctx = nullptr;
+  if (!lookup("glGetIntegerv", pname, v, &ctx) || params == nullptr) return;
+  for (int i = 0; i < v.n; ++i) params[i] = to_int(v, i);
+}
+
+void GLAPIENTRY GetFloatv(GLenum pname, GLfloat* params) {
+  Values v;
+  Context* ctx = nullptr;
+  if (!lookup("glGetFloatv", pname, v, &ctx) || params == nullptr) return;
+  for (int i = 0; i < v.n; ++i) params[i] = static_cast<GLfloat>(v.v[i]);
+}
+
+void GLAPIENTRY GetDoublev(GLenum pname, GLdouble* params) {
+  Values v;
+  Context* ctx = nullptr;
+  if (!lookup("glGetDoublev", pname, v, &ctx) || params == nullptr) return;
+  for (int i = 0; i < v.n; ++i) params[i] = v.v[i];
+}
+
+void GLAPIENTRY GetPointerv(GLenum pname, void** params) {
+  PINEDA_CTX_OUTSIDE("glGetPointerv");
+  const void* p = nullptr;
+  switch (pname) {
+  case GL_VERTEX_ARRAY_POINTER: p = ctx->arrays.vertex.pointer; break;
+  case GL_COLOR_ARRAY_POINTER: p = ctx->arrays.color.pointer; break;
+  case GL_NORMAL_ARRAY_POINTER: p = ctx->arrays.normal.pointer; break;
+  case GL_TEXTURE_COORD_ARRAY_POINTER:
+    p = ctx->arrays.texcoord[ctx->client_active_texture].pointer;
+    break;
+  case GL_EDGE_FLAG_ARRAY_POINTER: p = ctx->arrays.edgeflag.pointer; break;
+  default: return record_error(ctx, GL_INVALID_ENUM, "glGetPointerv", pname);
+  }
+  if (params != nullptr) *params = const_cast<void*>(p);
+}
+
+} // namespace exec
+} // namespace pineda

@@ -1,0 +1,212 @@
+// Matrices and matrix stacks (GL 2.1 §2.11.2): glMatrixMode, load/mult (also transposed),
+// rotate/translate/scale, frustum/ortho, push/pop.
+#include <cmath>
+
+#include <glm/gtc/type_ptr.hpp>
+
+#include "core/api_util.h"
+#include "dispatch.h"
+
+namespace pineda {
+
+namespace {
+
+MatrixStack& current_stack(Context* ctx) {
+  switch (ctx->matrix_mode) {
+  case GL_PROJECTION: return ctx->projection;
+  case GL_TEXTURE: return ctx->texture[ctx->active_texture];
+  default: return ctx->modelview;
+  }
+}
+
+// Only the modelview and projection matrices feed the composite; texture matrices are read
+// directly by the geometry stage.
+void matrix_changed(Context* ctx) {
+  if (ctx->matrix_mode != GL_TEXTURE) mark_dirty(ctx, kDirtyTransform | kDirtyClipPlanes);
+}
+
+void load(const char* func, const glm::mat4& m) {
+  PINEDA_CTX_OUTSIDE(func);
+  current_stack(ctx).top() = m;
+  matrix_changed(ctx);
+}
+
+void mult(const char* func, const glm::mat4& m) {
+  PINEDA_CTX_OUTSIDE(func);
+  glm::mat4& top = current_stack(ctx).top();
+  top = top * m; // GL 2.1 §2.11.2: C' = C * M
+  matrix_changed(ctx);
+}
+
+template <typename T> glm::mat4 from_column_major(const T* m) {
+  glm::mat4 r;
+  for (int c = 0; c < 4; ++c)
+    for (int rr = 0; rr < 4; ++rr) r[c][rr] = static_cast<float>(m[c * 4 + rr]);
+  return r;
+}
+
+template <typename T> glm::mat4 from_row_major(const T* m) {
+  glm::mat4 r;
+  for (int c = 0; c < 4; ++c)
+    for (int rr = 0; rr < 4; ++rr) r[c][rr] = static_cast<float>(m[rr * 4 + c]);
+  return r;
+}
+
+// GL 2.1 §2.11.2 equation for Rotate: angle in degrees, axis normalized; a zero axis leaves
+// the matrix unchanged (Mesa does the same; the spec divides by |v|).
+glm::mat4 rotation(double angle_deg, double x, double y, double z) {
+  const double len = std::sqrt(x * x + y * y + z * z);
+  glm::mat4 r(1.0f);
+  if (!(len > 0.0) || !std::isfinite(len)) return r;
+  x /= len, y /= len, z /= len;
+  const double a = angle_deg * (3.14159265358979323846 / 180.0);
+  const double c = std::cos(a), s = std::sin(a), t = 1.0 - c;
+  // Column-major: r[column][row].
+  r[0][0] = static_cast<float>(x * x * t + c);
+  r[0][1] = static_cast<float>(y * x * t + z * s);
+  r[0][2] = static_cast<float>(z * x * t - y * s);
+  r[1][0] = static_cast<float>(x * y * t - z * s);
+  r[1][1] = static_cast<float>(y * y * t + c);
+  r[1][2] = static_cast<float>(z * y * t + x * s);
+  r[2][0] = static_cast<float>(x * z * t + y * s);
+  r[2][1] = static_cast<float>(y * z * t - x * s);
+  r[2][2] = static_cast<float>(z * z * t + c);
+  return r;
+}
+
+glm::mat4 translation(double x, double y, double z) {
+  glm::mat4 r(1.0f);
+  r[3][0] = static_cast<float>(x);
+  r[3][1] = static_cast<float>(y);
+  r[3][2] = static_cast<float>(z);
+  return r;
+}
+
+glm::mat4 scaling(double x, double y, double z) {
+  glm::mat4 r(1.0f);
+  r[0][0] = static_cast<float>(x);
+  r[1][1] = static_cast<float>(y);
+  r[2][2] = static_cast<float>(z);
+  return r;
+}
+
+} // namespace
+
+namespace exec {
+
+void GLAPIENTRY MatrixMode(GLenum mode) {
+  PINEDA_CTX_OUTSIDE("glMatrixMode");
+  if (mode != GL_MODELVIEW && mode != GL_PROJECTION && mode != GL_TEXTURE) {
+    record_error(ctx, GL_INVALID_ENUM, "glMatrixMode", mode);
+    return;
+  }
+  ctx->matrix_mode = mode;
+}
+
+void GLAPIENTRY LoadIdentity() { load("glLoadIdentity", glm::mat4(1.0f)); }
+void GLAPIENTRY LoadMatrixf(const GLfloat* m) {
+  if (m != nullptr) load("glLoadMatrixf", from_column_major(m));
+}
+void GLAPIENTRY LoadMatrixd(const GLdouble* m) {
+  if (m != nullptr) load("glLoadMatrixd", from_column_major(m));
+}
+void GLAPIENTRY MultMatrixf(const GLfloat* m) {
+  if (m != nullptr) mult("glMultMatrixf", from_column_major(m));
+}
+void GLAPIENTRY MultMatrixd(const GLdouble* m) {
+  if (m != nullptr) mult("glMultMatrixd", from_column_major(m));
+}
+// GL 2.1 §2.11.2: the transpose variants take row-major matrices.
+void GLAPIENTRY LoadTransposeMatrixf(const GLfloat* m) {
+  if (m != nullptr) load("glLoadTransposeMatrixf", from_row_major(m));
+}
+void GLAPIENTRY LoadTransposeMatrixd(const GLdouble* m) {
+  if (m != nullptr) load("glLoadTransposeMatrixd", from_row_major(m));
+}
+void GLAPIENTRY MultTransposeMatrixf(const GLfloat* m) {
+  if (m != nullptr) mult("glMultTransposeMatrixf", from_row_major(m));
+}
+void GLAPIENTRY MultTransposeMatrixd(const GLdouble* m) {
+  if (m != nullptr) mult("glMultTransposeMatrixd", from_row_major(m));
+}
+
+void GLAPIENTRY Rotatef(GLfloat a, GLfloat x, GLfloat y, GLfloat z) {
+  mult("glRotatef", rotation(a, x, y, z));
+}
+void GLAPIENTRY Rotated(GLdouble a, GLdouble x, GLdouble y, GLdouble z) {
+  mult("glRotated", rotation(a, x, y, z));
+}
+void GLAPIENTRY Translatef(GLfloat x, GLfloat y, GLfloat z) {
+  mult("glTranslatef", translation(x, y, z));
+}
+void GLAPIENTRY Translated(GLdouble x, GLdouble y, GLdouble z) {
+  mult("glTranslated", translation(x, y, z));
+}
+void GLAPIENTRY Scalef(GLfloat x, GLfloat y, GLfloat z) { mult("glScalef", scaling(x, y, z)); }
+void GLAPIENTRY Scaled(GLdouble x, GLdouble y, GLdouble z) {
+  mult("glScaled", scaling(x, y, z));
+}
+
+// GL 2.1 §2.11.2 Frustum: INVALID_VALUE when n or f <= 0, l == r, b == t or n == f.
+void GLAPIENTRY Frustum(GLdouble l, GLdouble r, GLdouble b, GLdouble t, GLdouble n, GLdouble f) {
+  PINEDA_CTX_OUTSIDE("glFrustum");
+  if (n <= 0.0 || f <= 0.0 || l == r || b == t || n == f) {
+    record_error(ctx, GL_INVALID_VALUE, "glFrustum");
+    return;
+  }
+  glm::mat4 m(0.0f);
+  m[0][0] = static_cast<float>(2.0 * n / (r - l));
+  m[1][1] = static_cast<float>(2.0 * n / (t - b));
+  m[2][0] = static_cast<float>((r + l) / (r - l));
+  m[2][1] = static_cast<float>((t + b) / (t - b));
+  m[2][2] = static_cast<float>(-(f + n) / (f - n));
+  m[2][3] = -1.0f;
+  m[3][2] = static_cast<float>(-2.0 * f * n / (f - n));
+  glm::mat4& top = current_stack(ctx).top();
+  top = top * m;
+  matrix_changed(ctx);
+}
+
+// GL 2.1 §2.11.2 Ortho: INVALID_VALUE when l == r, b == t or n == f.
+void GLAPIENTRY Ortho(GLdouble l, GLdouble r, GLdouble b, GLdouble t, GLdouble n, GLdouble f) {
+  PINEDA_CTX_OUTSIDE("glOrtho");
+  if (l == r || b == t || n == f) {
+    record_error(ctx, GL_INVALID_VALUE, "glOrtho");
+    return;
+  }
+  glm::mat4 m(1.0f);
+  m[0][0] = static_cast<float>(2.0 / (r - l));
+  m[1][1] = static_cast<float>(2.0 / (t - b));
+  m[2][2] = static_cast<float>(-2.0 / (f - n));
+  m[3][0] = static_cast<float>(-(r + l) / (r - l));
+  m[3][1] = static_cast<float>(-(t + b) / (t - b));
+  m[3][2] = static_cast<float>(-(f + n) / (f - n));
+  glm::mat4& top = current_stack(ctx).top();
+  top = top * m;
+  matrix_changed(ctx);
+}
+
+// GL 2.1 §2.11.2: STACK_OVERFLOW / STACK_UNDERFLOW leave the stack unchanged.
+void GLAPIENTRY PushMatrix() {
+  PINEDA_CTX_OUTSIDE("glPushMatrix");
+  MatrixStack& s = current_stack(ctx);
+  if (s.stack.size() >= s.max_depth) {
+    record_error(ctx, GL_STACK_OVERFLOW, "glPushMatrix");
+    return;
+  }
+  s.stack.push_back(s.top());
+}
+
+void GLAPIENTRY PopMatrix() {
+  PINEDA_CTX_OUTSIDE("glPopMatrix");
+  MatrixStack& s = current_stack(ctx);
+  if (s.stack.size() <= 1) {
+    record_error(ctx, GL_STACK_UNDERFLOW, "glPopMatrix");
+    return;
+  }
+  s.stack.pop_back();
+  matrix_changed(ctx);
+}
+
+} // namespace exec
+} // namespace pineda

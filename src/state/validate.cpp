@@ -1,0 +1,69 @@
+// Validation: derive the back end's plain RasterState and the composite matrix from the GL
+// state, only for the groups marked dirty since the last draw.
+#include <glm/matrix.hpp>
+
+#include "core/context.h"
+#include "geometry/geometry.h"
+
+namespace pineda {
+
+void validate_state(Context* ctx) {
+  const uint32_t dirty = ctx->dirty;
+  if (dirty == 0) return;
+  RasterState& rs = ctx->raster;
+
+  if (dirty & kDirtyTransform) {
+    ctx->mvp = ctx->projection.top() * ctx->modelview.top();
+  }
+  if (dirty & kDirtyViewport) {
+    rs.viewport.x = static_cast<float>(ctx->vp_x);
+    rs.viewport.y = static_cast<float>(ctx->vp_y);
+    rs.viewport.w = static_cast<float>(ctx->vp_w);
+    rs.viewport.h = static_cast<float>(ctx->vp_h);
+    rs.viewport.near = static_cast<float>(ctx->depth_near);
+    rs.viewport.far = static_cast<float>(ctx->depth_far);
+  }
+  if (dirty & (kDirtyClipPlanes | kDirtyTransform)) {
+    // GL 2.1 §2.12: a point is inside a user plane when dot(plane_eye, eye) >= 0. With
+    // clip = P * eye that equals dot(plane_eye * P^-1, clip), so the test moves to clip space
+    // and eye coordinates are never computed.
+    rs.user_clip_mask = 0;
+    const glm::dmat4 inv_p = glm::inverse(glm::dmat4(ctx->projection.top()));
+    for (int i = 0; i < kMaxClipPlanes; ++i) {
+      if (!ctx->clip_enabled[i]) continue;
+      const double* e = ctx->clip_plane[i];
+      const glm::dvec4 c = glm::dvec4(e[0], e[1], e[2], e[3]) * inv_p;
+      for (int k = 0; k < 4; ++k) rs.user_planes[i][k] = static_cast<float>(c[k]);
+      rs.user_clip_mask |= 1u << i;
+    }
+  }
+  if (dirty & kDirtyPolygon) {
+    rs.cull_enabled = ctx->cull_enabled;
+    rs.cull_face = ctx->cull_face;
+    rs.front_face = ctx->front_face;
+    rs.polygon_mode[0] = ctx->polygon_mode[0];
+    rs.polygon_mode[1] = ctx->polygon_mode[1];
+    rs.flat = ctx->shade_model == GL_FLAT;
+  }
+  if (dirty & (kDirtyFragment | kDirtyFramebuffer)) {
+    // GL 2.1 §4.1.6: without a depth buffer the depth test always passes and nothing is
+    // written, which is the same as the test being off.
+    rs.depth_test = ctx->depth_test && ctx->fb.depth != nullptr;
+    rs.depth_func = ctx->depth_func;
+    rs.depth_write = ctx->depth_mask;
+    for (int i = 0; i < 4; ++i) rs.color_write[i] = ctx->color_mask[i];
+    rs.blend = ctx->blend;
+    rs.blend_src_rgb = ctx->blend_src_rgb;
+    rs.blend_dst_rgb = ctx->blend_dst_rgb;
+    rs.blend_src_a = ctx->blend_src_a;
+    rs.blend_dst_a = ctx->blend_dst_a;
+    rs.blend_eq_rgb = ctx->blend_eq_rgb;
+    rs.blend_eq_a = ctx->blend_eq_a;
+    for (int i = 0; i < 4; ++i) rs.blend_color[i] = ctx->blend_color[i];
+  }
+  // Only the primary colour is read by the fragment stage until texturing and fog exist.
+  rs.attr_count = 4;
+  ctx->dirty = 0;
+}
+
+} // namespace pineda

@@ -1,0 +1,332 @@
+// Vertex arrays (GL 2.1 §2.8): array pointers, glArrayElement, the Draw* commands,
+// glInterleavedArrays, and the client attribute stack (§6.1.14).
+#include <algorithm>
+#include <cstring>
+
+#include "core/api_util.h"
+#include "dispatch.h"
+#include "geometry/fetch.h"
+#include "geometry/geometry.h"
+
+namespace pineda {
+
+namespace {
+
+bool valid_mode(GLenum mode) { return mode <= GL_POLYGON; }
+
+void set_pointer(const char* func, ClientArray& a, GLint size, GLenum type, GLsizei stride,
+                 const void* ptr, Context* ctx) {
+  (void)func;
+  a.size = size;
+  a.type = type;
+  a.stride = stride;
+  a.pointer = ptr;
+  a.buffer = ctx->array_buffer;
+}
+
+bool type_in(GLenum type, std::initializer_list<GLenum> allowed) {
+  return std::find(allowed.begin(), allowed.end(), type) != allowed.end();
+}
+
+// GL 1.5 §2.9: drawing from a mapped buffer is INVALID_OPERATION.
+bool arrays_mapped(Context* ctx, bool with_elements) {
+  auto mapped = [ctx](GLuint name) {
+    if (name == 0) return false;
+    auto it = ctx->buffers.find(name);
+    return it != ctx->buffers.end() && it->second->mapped;
+  };
+  const VertexArrays& a = ctx->arrays;
+  if ((a.vertex.enabled && mapped(a.vertex.buffer)) || (a.color.enabled && mapped(a.color.buffer)) ||
+      (a.normal.enabled && mapped(a.normal.buffer)) ||
+      (a.texcoord[0].enabled && mapped(a.texcoord[0].buffer)) ||
+      (a.edgeflag.enabled && mapped(a.edgeflag.buffer)))
+    return true;
+  return with_elements && mapped(ctx->element_array_buffer);
+}
+
+// Draw elements [first, first+count) of the enabled arrays.
+void draw_range(Context* ctx, GLenum mode, size_t first, size_t count) {
+  // GL 2.1 §2.8: without the vertex array enabled nothing is drawn.
+  if (count == 0 || !ctx->arrays.vertex.enabled) return;
+  if (!arrays_hold(ctx, first + count - 1)) return;
+  ctx->fetch_scratch.resize(count);
+  if (!fetch_range(ctx, first, count, ctx->fetch_scratch.data())) return;
+  draw_vertices(ctx, mode, ctx->fetch_scratch.data(), count, nullptr, count);
+}
+
+// Read `count` indices of `type` at `indices` (a buffer offset when an element buffer is
+// bound) into ctx->index_scratch; false when they would be read outside the buffer.
+bool read_indices(Context* ctx, GLsizei count, GLenum type, const void* indices) {
+  const uint8_t* src = static_cast<const uint8_t*>(indices);
+  const size_t bytes = static_cast<size_t>(count) * type_size(type);
+  if (ctx->element_array_buffer != 0) {
+    auto it = ctx->buffers.find(ctx->element_array_buffer);
+    if (it == ctx->buffers.end()) return false;
+    const size_t offset = reinterpret_cast<uintptr_t>(indices);
+    if (offset > it->second->data.size() || bytes > it->second->data.size() - offset)
+      return false;
+    src = it->second->data.data() + offset;
+  } else if (src == nullptr) {
+    return false;
+  }
+  ctx->index_scratch.resize(static_cast<size_t>(count));
+  uint32_t* dst = ctx->index_scratch.data();
+  switch (type) {
+  case GL_UNSIGNED_BYTE:
+    for (GLsizei i = 0; i < count; ++i) dst[i] = src[i];
+    break;
+  case GL_UNSIGNED_SHORT:
+    for (GLsizei i = 0; i < count; ++i) {
+      GLushort v;
+      std::memcpy(&v, src + 2 * i, 2);
+      dst[i] = v;
+    }
+    break;
+  default:
+    std::memcpy(dst, src, bytes);
+    break;
+  }
+  return true;
+}
+
+// Fetch the index range [lo, hi] once and rebase the indices, unless the range is much wider
+// than the draw, in which case each index is fetched on its own.
+void draw_indexed(Context* ctx, GLenum mode, GLsizei count, GLenum type, const void* indices) {
+  if (count == 0 || !ctx->arrays.vertex.enabled) return;
+  if (!read_indices(ctx, count, type, indices)) return;
+  std::vector<uint32_t>& idx = ctx->index_scratch;
+  const auto [lo_it, hi_it] = std::minmax_element(idx.begin(), idx.end());
+  const uint32_t lo = *lo_it, hi = *hi_it;
+  const size_t span = static_cast<size_t>(hi) - lo + 1;
+  if (!arrays_hold(ctx, hi)) return;
+  if (span <= 4 * static_cast<size_t>(count) + 1024) {
+    ctx->fetch_scratch.resize(span);
+    if (!fetch_range(ctx, lo, span, ctx->fetch_scratch.data())) return;
+    for (uint32_t& i : idx) i -= lo;
+    draw_vertices(ctx, mode, ctx->fetch_scratch.data(), span, idx.data(), idx.size());
+  } else {
+    ctx->fetch_scratch.resize(idx.size());
+    if (!fetch_list(ctx, idx.data(), idx.size(), ctx->fetch_scratch.data())) return;
+    draw_vertices(ctx, mode, ctx->fetch_scratch.data(), idx.size(), nullptr, idx.size());
+  }
+}
+
+// Validation shared by DrawElements, DrawRangeElements and MultiDrawElements.
+bool check_elements(Context* ctx, const char* func, GLenum mode, GLsizei count, GLenum type) {
+  if (!valid_mode(mode)) {
+    record_error(ctx, GL_INVALID_ENUM, func, mode);
+    return false;
+  }
+  if (count < 0) {
+    record_error(ctx, GL_INVALID_VALUE, func);
+    return false;
+  }
+  if (type != GL_UNSIGNED_BYTE && type != GL_UNSIGNED_SHORT && type != GL_UNSIGNED_INT) {
+    record_error(ctx, GL_INVALID_ENUM, func, type);
+    return false;
+  }
+  if (arrays_mapped(ctx, true)) {
+    record_error(ctx, GL_INVALID_OPERATION, func);
+    return false;
+  }
+  return true;
+}
+
+} // namespace
+
+namespace exec {
+
+void GLAPIENTRY VertexPointer(GLint size, GLenum type, GLsizei stride, const void* ptr) {
+  PINEDA_CTX_OUTSIDE("glVertexPointer");
+  if (size < 2 || size > 4 || stride < 0)
+    return record_error(ctx, GL_INVALID_VALUE, "glVertexPointer");
+  if (!type_in(type, {GL_SHORT, GL_INT, GL_FLOAT, GL_DOUBLE}))
+    return record_error(ctx, GL_INVALID_ENUM, "glVertexPointer", type);
+  set_pointer("glVertexPointer", ctx->arrays.vertex, size, type, stride, ptr, ctx);
+}
+
+void GLAPIENTRY ColorPointer(GLint size, GLenum type, GLsizei stride, const void* ptr) {
+  PINEDA_CTX_OUTSIDE("glColorPointer");
+  if (size < 3 || size > 4 || stride < 0)
+    return record_error(ctx, GL_INVALID_VALUE, "glColorPointer");
+  if (!type_in(type, {GL_BYTE, GL_UNSIGNED_BYTE, GL_SHORT, GL_UNSIGNED_SHORT, GL_INT,
+                      GL_UNSIGNED_INT, GL_FLOAT, GL_DOUBLE}))
+    return record_error(ctx, GL_INVALID_ENUM, "glColorPointer", type);
+  set_pointer("glColorPointer", ctx->arrays.color, size, type, stride, ptr, ctx);
+}
+
+void GLAPIENTRY NormalPointer(GLenum type, GLsizei stride, const void* ptr) {
+  PINEDA_CTX_OUTSIDE("glNormalPointer");
+  if (stride < 0) return record_error(ctx, GL_INVALID_VALUE, "glNormalPointer");
+  if (!type_in(type, {GL_BYTE, GL_SHORT, GL_INT, GL_FLOAT, GL_DOUBLE}))
+    return record_error(ctx, GL_INVALID_ENUM, "glNormalPointer", type);
+  set_pointer("glNormalPointer", ctx->arrays.normal, 3, type, stride, ptr, ctx);
+}
+
+void GLAPIENTRY TexCoordPointer(GLint size, GLenum type, GLsizei stride, const void* ptr) {
+  PINEDA_CTX_OUTSIDE("glTexCoordPointer");
+  if (size < 1 || size > 4 || stride < 0)
+    return record_error(ctx, GL_INVALID_VALUE, "glTexCoordPointer");
+  if (!type_in(type, {GL_SHORT, GL_INT, GL_FLOAT, GL_DOUBLE}))
+    return record_error(ctx, GL_INVALID_ENUM, "glTexCoordPointer", type);
+  set_pointer("glTexCoordPointer", ctx->arrays.texcoord[ctx->client_active_texture], size, type,
+              stride, ptr, ctx);
+}
+
+void GLAPIENTRY EdgeFlagPointer(GLsizei stride, const void* ptr) {
+  PINEDA_CTX_OUTSIDE("glEdgeFlagPointer");
+  if (stride < 0) return record_error(ctx, GL_INVALID_VALUE, "glEdgeFlagPointer");
+  set_pointer("glEdgeFlagPointer", ctx->arrays.edgeflag, 1, GL_BOOL, stride, ptr, ctx);
+}
+
+// GL 2.1 §2.8: ArrayElement acts as the Color/Normal/TexCoord/EdgeFlag commands for each
+// enabled array, then Vertex when the vertex array is enabled.
+void GLAPIENTRY ArrayElement(GLint i) {
+  Context* ctx = current_context();
+  if (ctx == nullptr) return;
+  if (i < 0) return record_error(ctx, GL_INVALID_VALUE, "glArrayElement");
+  InputVertex v;
+  if (!fetch_range(ctx, static_cast<size_t>(i), 1, &v)) return;
+  const VertexArrays& a = ctx->arrays;
+  if (a.color.enabled) std::copy(v.color, v.color + 4, ctx->cur_color);
+  if (a.normal.enabled) std::copy(v.normal, v.normal + 3, ctx->cur_normal);
+  if (a.texcoord[0].enabled) std::copy(v.tex, v.tex + 4, ctx->cur_tex[0]);
+  if (a.edgeflag.enabled) ctx->cur_edge = v.edge != 0;
+  if (a.vertex.enabled && ctx->begin_mode != kOutsideBeginEnd) ctx->imm.push_back(v);
+}
+
+void GLAPIENTRY DrawArrays(GLenum mode, GLint first, GLsizei count) {
+  PINEDA_CTX_OUTSIDE("glDrawArrays");
+  if (!valid_mode(mode)) return record_error(ctx, GL_INVALID_ENUM, "glDrawArrays", mode);
+  if (count < 0 || first < 0) return record_error(ctx, GL_INVALID_VALUE, "glDrawArrays");
+  if (arrays_mapped(ctx, false)) return record_error(ctx, GL_INVALID_OPERATION, "glDrawArrays");
+  draw_range(ctx, mode, static_cast<size_t>(first), static_cast<size_t>(count));
+}
+
+void GLAPIENTRY DrawElements(GLenum mode, GLsizei count, GLenum type, const void* indices) {
+  PINEDA_CTX_OUTSIDE("glDrawElements");
+  if (!check_elements(ctx, "glDrawElements", mode, count, type)) return;
+  draw_indexed(ctx, mode, count, type, indices);
+}
+
+// GL 2.1 §2.8: the range is a promise; Pineda checks only end >= start and draws as
+// DrawElements (indices outside the range are still fetched correctly).
+void GLAPIENTRY DrawRangeElements(GLenum mode, GLuint start, GLuint end, GLsizei count,
+                                  GLenum type, const void* indices) {
+  PINEDA_CTX_OUTSIDE("glDrawRangeElements");
+  if (end < start) return record_error(ctx, GL_INVALID_VALUE, "glDrawRangeElements");
+  if (!check_elements(ctx, "glDrawRangeElements", mode, count, type)) return;
+  draw_indexed(ctx, mode, count, type, indices);
+}
+
+void GLAPIENTRY MultiDrawArrays(GLenum mode, const GLint* first, const GLsizei* count,
+                                GLsizei drawcount) {
+  PINEDA_CTX_OUTSIDE("glMultiDrawArrays");
+  if (!valid_mode(mode)) return record_error(ctx, GL_INVALID_ENUM, "glMultiDrawArrays", mode);
+  if (drawcount < 0) return record_error(ctx, GL_INVALID_VALUE, "glMultiDrawArrays");
+  if (drawcount == 0 || first == nullptr || count == nullptr) return;
+  for (GLsizei i = 0; i < drawcount; ++i)
+    if (count[i] < 0 || first[i] < 0)
+      return record_error(ctx, GL_INVALID_VALUE, "glMultiDrawArrays");
+  if (arrays_mapped(ctx, false))
+    return record_error(ctx, GL_INVALID_OPERATION, "glMultiDrawArrays");
+  for (GLsizei i = 0; i < drawcount; ++i)
+    draw_range(ctx, mode, static_cast<size_t>(first[i]), static_cast<size_t>(count[i]));
+}
+
+void GLAPIENTRY MultiDrawElements(GLenum mode, const GLsizei* count, GLenum type,
+                                  const void* const* indices, GLsizei drawcount) {
+  PINEDA_CTX_OUTSIDE("glMultiDrawElements");
+  if (drawcount < 0) return record_error(ctx, GL_INVALID_VALUE, "glMultiDrawElements");
+  if (!check_elements(ctx, "glMultiDrawElements", mode, 0, type)) return;
+  if (drawcount == 0 || count == nullptr || indices == nullptr) return;
+  for (GLsizei i = 0; i < drawcount; ++i)
+    if (count[i] < 0) return record_error(ctx, GL_INVALID_VALUE, "glMultiDrawElements");
+  for (GLsizei i = 0; i < drawcount; ++i) draw_indexed(ctx, mode, count[i], type, indices[i]);
+}
+
+// GL 2.1 §2.8 Table 2.5: the fourteen interleaved layouts.
+void GLAPIENTRY InterleavedArrays(GLenum format, GLsizei stride, const void* pointer) {
+  PINEDA_CTX_OUTSIDE("glInterleavedArrays");
+  if (stride < 0) return record_error(ctx, GL_INVALID_VALUE, "glInterleavedArrays");
+  struct Layout {
+    GLenum format;
+    bool et, ec;
+    int st, sc, sv;
+    GLenum tc;
+    int pc, pn, pv, s; // offsets and size in units of float, colour ubyte counted as 1 float
+  };
+  constexpr int f = 4;
+  static constexpr Layout kLayouts[] = {
+      {GL_V2F, false, false, 0, 0, 2, 0, 0, 0, 0, 2 * f},
+      {GL_V3F, false, false, 0, 0, 3, 0, 0, 0, 0, 3 * f},
+      {GL_C4UB_V2F, false, true, 0, 4, 2, GL_UNSIGNED_BYTE, 0, 0, f, 3 * f},
+      {GL_C4UB_V3F, false, true, 0, 4, 3, GL_UNSIGNED_BYTE, 0, 0, f, 4 * f},
+      {GL_C3F_V3F, false, true, 0, 3, 3, GL_FLOAT, 0, 0, 3 * f, 6 * f},
+      {GL_N3F_V3F, false, false, 0, 0, 3, 0, 0, 0, 3 * f, 6 * f},
+      {GL_C4F_N3F_V3F, false, true, 0, 4, 3, GL_FLOAT, 0, 4 * f, 7 * f, 10 * f},
+      {GL_T2F_V3F, true, false, 2, 0, 3, 0, 0, 0, 2 * f, 5 * f},
+      {GL_T4F_V4F, true, false, 4, 0, 4, 0, 0, 0, 4 * f, 8 * f},
+      {GL_T2F_C4UB_V3F, true, true, 2, 4, 3, GL_UNSIGNED_BYTE, 2 * f, 0, 3 * f, 6 * f},
+      {GL_T2F_C3F_V3F, true, true, 2, 3, 3, GL_FLOAT, 2 * f, 0, 5 * f, 8 * f},
+      {GL_T2F_N3F_V3F, true, false, 2, 0, 3, 0, 0, 2 * f, 5 * f, 8 * f},
+      {GL_T2F_C4F_N3F_V3F, true, true, 2, 4, 3, GL_FLOAT, 2 * f, 6 * f, 9 * f, 12 * f},
+      {GL_T4F_C4F_N3F_V4F, true, true, 4, 4, 4, GL_FLOAT, 4 * f, 8 * f, 11 * f, 15 * f},
+  };
+  const Layout* l = nullptr;
+  for (const Layout& c : kLayouts)
+    if (c.format == format) l = &c;
+  if (l == nullptr) return record_error(ctx, GL_INVALID_ENUM, "glInterleavedArrays", format);
+  const bool has_normal = format == GL_N3F_V3F || format == GL_C4F_N3F_V3F ||
+                          format == GL_T2F_N3F_V3F || format == GL_T2F_C4F_N3F_V3F ||
+                          format == GL_T4F_C4F_N3F_V4F;
+  const GLsizei s = stride != 0 ? stride : l->s;
+  const uint8_t* p = static_cast<const uint8_t*>(pointer);
+  VertexArrays& a = ctx->arrays;
+  ClientArray& tex = a.texcoord[ctx->client_active_texture];
+  a.edgeflag.enabled = false;
+  tex.enabled = l->et;
+  if (l->et) set_pointer("glInterleavedArrays", tex, l->st, GL_FLOAT, s, p, ctx);
+  a.color.enabled = l->ec;
+  if (l->ec) set_pointer("glInterleavedArrays", a.color, l->sc, l->tc, s, p + l->pc, ctx);
+  a.normal.enabled = has_normal;
+  if (has_normal) set_pointer("glInterleavedArrays", a.normal, 3, GL_FLOAT, s, p + l->pn, ctx);
+  a.vertex.enabled = true;
+  set_pointer("glInterleavedArrays", a.vertex, l->sv, GL_FLOAT, s, p + l->pv, ctx);
+}
+
+void GLAPIENTRY PushClientAttrib(GLbitfield mask) {
+  PINEDA_CTX_OUTSIDE("glPushClientAttrib");
+  if (ctx->client_attrib_stack.size() >= kClientAttribStackDepth)
+    return record_error(ctx, GL_STACK_OVERFLOW, "glPushClientAttrib");
+  ClientAttribFrame f;
+  f.mask = mask;
+  f.pack = ctx->pack;
+  f.unpack = ctx->unpack;
+  f.arrays = ctx->arrays;
+  f.array_buffer = ctx->array_buffer;
+  f.element_array_buffer = ctx->element_array_buffer;
+  f.client_active_texture = ctx->client_active_texture;
+  ctx->client_attrib_stack.push_back(f);
+}
+
+void GLAPIENTRY PopClientAttrib() {
+  PINEDA_CTX_OUTSIDE("glPopClientAttrib");
+  if (ctx->client_attrib_stack.empty())
+    return record_error(ctx, GL_STACK_UNDERFLOW, "glPopClientAttrib");
+  const ClientAttribFrame& f = ctx->client_attrib_stack.back();
+  if (f.mask & GL_CLIENT_PIXEL_STORE_BIT) {
+    ctx->pack = f.pack;
+    ctx->unpack = f.unpack;
+  }
+  if (f.mask & GL_CLIENT_VERTEX_ARRAY_BIT) {
+    ctx->arrays = f.arrays;
+    ctx->array_buffer = f.array_buffer;
+    ctx->element_array_buffer = f.element_array_buffer;
+    ctx->client_active_texture = f.client_active_texture;
+  }
+  ctx->client_attrib_stack.pop_back();
+}
+
+} // namespace exec
+} // namespace pineda
