@@ -93,6 +93,7 @@ std::string serialize_record(const SceneRecord& r) {
       << "why\t" << one_line(r.why) << "\n"
       << "allowance\t" << number(r.allowance) << "\n"
       << "tolerance\t" << r.tolerance << "\n"
+      << "oracle\t" << one_line(r.oracle) << "\n"
       << "passed\t" << (r.passed ? 1 : 0) << "\n"
       << "verdict\t" << one_line(r.verdict) << "\n"
       << "when\t" << one_line(r.when) << "\n";
@@ -119,6 +120,7 @@ bool parse_record(const std::string& text, SceneRecord& r) {
   r.why = get(f, "why");
   r.allowance = to_number(get(f, "allowance"));
   r.tolerance = std::atoi(get(f, "tolerance").c_str());
+  r.oracle = get(f, "oracle") == "softpipe" ? "softpipe" : "llvmpipe";
   r.passed = get(f, "passed") == "1";
   r.verdict = get(f, "verdict");
   r.when = get(f, "when");

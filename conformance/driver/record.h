@@ -25,11 +25,15 @@ struct SceneRecord {
   std::string name, description, why;
   double allowance = 0.5;
   int tolerance = 2;
+  std::string oracle = "llvmpipe"; // the implementation that decides pass or fail
   bool passed = false;
   std::string verdict;       // "pass" or the reason for failing
   std::string when;          // local time of the run
   ImplResult pineda, llvmpipe, softpipe;
   DiffStats vs_llvmpipe, vs_softpipe, llvmpipe_vs_softpipe;
+
+  bool softpipe_oracle() const { return oracle == "softpipe"; }
+  const DiffStats& vs_oracle() const { return softpipe_oracle() ? vs_softpipe : vs_llvmpipe; }
 
   // Pineda time over the other's median time; 0 when either is unknown.
   double ratio_llvmpipe() const;

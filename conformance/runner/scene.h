@@ -29,7 +29,10 @@ struct SceneOptions {
   int depth_bits = 24;         // context depth bits passed to OSMesaCreateContextExt
   bool y_up = true;            // OSMesaPixelStore(OSMESA_Y_UP, ...)
   double allowance = 0.5;      // percent of pixels allowed to differ from llvmpipe
-  // Required whenever allowance exceeds the default: why GL leaves the result open.
+  // Compare against softpipe instead of llvmpipe: only for scenes llvmpipe gets wrong.
+  bool softpipe_oracle = false;
+  // Required whenever allowance exceeds the default or softpipe is the oracle: why GL leaves
+  // the result open, or what llvmpipe gets wrong.
   const char* why = nullptr;
 };
 

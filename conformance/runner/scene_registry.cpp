@@ -18,9 +18,10 @@ std::vector<Scene>& registry() {
 Registrar::Registrar(const char* name, const char* description, const SceneOptions& options,
                      DrawFn draw) {
   // A looser allowance must say why: the report shows the justification next to the numbers.
-  if (options.allowance > SceneOptions{}.allowance && (!options.why || !*options.why)) {
-    std::fprintf(stderr, "scene %s: allowance %.2f%% without a justification\n", name,
-                 options.allowance);
+  if ((options.allowance > SceneOptions{}.allowance || options.softpipe_oracle) &&
+      (!options.why || !*options.why)) {
+    std::fprintf(stderr, "scene %s: allowance %.2f%% or softpipe oracle without a justification\n",
+                 name, options.allowance);
     std::abort();
   }
   auto& scenes = registry();

@@ -252,8 +252,10 @@ PINEDA_SCENE(mode_polygon, "GL_POLYGON convex 3..10-gons with affine colours; fl
   });
 }
 
-PINEDA_SCENE(quad_split_colors, "Non-affine colours on quads, quad strips and polygons: Mesa splits "
-             "each as a fan from its first vertex (softpipe splits GL_QUADS on the other diagonal)") {
+PINEDA_SCENE(quad_split_colors, "Non-affine colours on quads, quad strips and polygons: llvmpipe "
+             "splits each as a fan from its first vertex",
+             .why = "GL allows any split (GL 2.1 §3.5.1); llvmpipe is the reference, softpipe splits "
+                    "GL_QUADS along the v1-v3 diagonal instead, hence the llvmpipe vs softpipe gap") {
   // GL leaves the interpolation across polygons of more than three vertices open
   // (GL 2.1 §3.5.1: any convex combination). llvmpipe, the reference, triangulates GL_QUADS,
   // GL_QUAD_STRIP (in polygon order 2i, 2i+1, 2i+3, 2i+2) and GL_POLYGON as a fan from the

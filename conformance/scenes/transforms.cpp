@@ -49,8 +49,8 @@ void branch(int depth) {
 // A sheared, rotated, translated matrix with a projective bottom row, column-major as GL wants.
 void reference_matrix(GLdouble m[16], float w, float h) {
   const double a = 0.4, s = std::sin(a), c = std::cos(a);
-  const double cols[16] = {0.9 * c, 0.9 * s, 0.0, 0.0008, -0.7 * s + 0.2, 0.7 * c, 0.0, 0.0004,
-                           0.0,     0.0,     1.0, 0.0,    0.5 * w,       0.35 * h, 0.0, 1.0};
+  const double cols[16] = {0.9 * c, 0.9 * s, 0.0, 0.004, -0.7 * s + 0.2, 0.7 * c, 0.0, 0.002,
+                           0.0,     0.0,     1.0, 0.0,   0.5 * w,       0.45 * h, 0.0, 1.0};
   for (int i = 0; i < 16; ++i) m[i] = cols[i];
 }
 
@@ -122,7 +122,7 @@ PINEDA_SCENE(matrix_load_mult, "The same projective matrix by glLoad/Mult[Transp
     case 6: glScalef(2.0f, 2.0f, 1.0f); glScalef(0.5f, 0.5f, 1.0f); mult_tf(mtf); break;
     case 7: glLoadIdentity(); mult_td(mt); break;
     default:
-      glTranslatef(0.5f * w, 0.35f * h, 0.0f);
+      glTranslatef(0.5f * w, 0.45f * h, 0.0f);
       glRotatef(0.4f * 180.0f / kPi, 0.0f, 0.0f, 1.0f);
       glScalef(0.9f, 0.7f, 1.0f);
       break;
@@ -133,9 +133,9 @@ PINEDA_SCENE(matrix_load_mult, "The same projective matrix by glLoad/Mult[Transp
       glColor3f(1.0f, 1.0f, 1.0f);
       glVertex2f(0.0f, 0.0f);
       palette_color(t);
-      glVertex2f(0.3f * w * std::cos(a), 0.3f * h * std::sin(a));
+      glVertex2f(0.42f * w * std::cos(a), 0.42f * h * std::sin(a));
       palette_color(t + 1);
-      glVertex2f(0.3f * w * std::cos(a + 0.8f), 0.3f * h * std::sin(a + 0.8f));
+      glVertex2f(0.42f * w * std::cos(a + 0.8f), 0.42f * h * std::sin(a + 0.8f));
     }
     glEnd();
   }
@@ -156,7 +156,8 @@ PINEDA_SCENE(projection_variants, "Off-centre glFrustum, mirrored and anisotropi
     }
     glMatrixMode(GL_MODELVIEW);
     glLoadIdentity();
-    if (p == 0 || p == 3) glTranslatef(0.0f, 0.0f, -4.0f);
+    if (p == 0) glTranslatef(0.0f, 0.0f, -4.0f);
+    if (p == 3) glTranslatef(0.0f, 0.0f, -2.2f);
     glRotatef(25.0f, 1.0f, 0.0f, 0.0f);
     glRotatef(35.0f + 10.0f * p, 0.0f, 1.0f, 0.0f);
     glScalef(1.2f, 1.2f, 1.2f);
@@ -256,13 +257,13 @@ PINEDA_SCENE(perspective_color, "Perspective-correct colour on a big receding qu
   glVertex3f(-3.0f, -1.5f, -1.5f);
   glVertex3f(3.0f, -1.5f, -1.5f);
   glColor3f(0.125f, 0.25f, 1.0f);
-  glVertex3f(3.0f, -1.5f, -120.0f);
-  glVertex3f(-3.0f, -1.5f, -120.0f);
+  glVertex3f(3.0f, -1.5f, -14.0f);
+  glVertex3f(-3.0f, -1.5f, -14.0f);
   glEnd();
   // A wall on the right with colour stripes along its length.
   glBegin(GL_TRIANGLE_STRIP);
   for (int i = 0; i <= 16; ++i) {
-    const float z = -1.2f - 6.0f * static_cast<float>(i);
+    const float z = -1.2f - 1.5f * static_cast<float>(i);
     palette_color(i);
     glVertex3f(1.6f, -1.5f, z);
     glVertex3f(1.6f, 3.0f, z);
@@ -274,6 +275,6 @@ PINEDA_SCENE(perspective_color, "Perspective-correct colour on a big receding qu
   glVertex3f(-4.0f, 1.2f, -1.1f);
   glVertex3f(1.5f, 1.2f, -1.1f);
   glColor3f(1.0f, 1.0f, 0.125f);
-  glVertex3f(-1.0f, 1.2f, -150.0f);
+  glVertex3f(-1.0f, 1.2f, -20.0f);
   glEnd();
 }

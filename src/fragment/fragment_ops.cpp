@@ -8,6 +8,8 @@
 // is left at run time are values (blend factors, generic depth function, colour keep mask).
 #include "fragment/fragment_ops.h"
 
+#include "fragment/simd.h"
+
 #include <algorithm>
 #include <array>
 #include <bit>
@@ -18,6 +20,14 @@ namespace pineda {
 namespace {
 
 constexpr int N = kBlockSize;
+
+// Eight packed pixels of one block row, in the 4-byte format's memory order.
+struct Row {
+  u32x4 v[2];
+};
+
+constexpr f32x4 kLaneLo = {0, 1, 2, 3};
+constexpr f32x4 kLaneHi = {4, 5, 6, 7};
 
 // Byte offsets of R, G, B, A inside one stored pixel (framebuffer.h ColorFormat).
 template <ColorFormat F> struct Layout;
@@ -39,208 +49,252 @@ constexpr int byte_shift(int off) {
   return std::endian::native == std::endian::little ? 8 * off : 8 * (3 - off);
 }
 
-// One block row of colours, channel-major so that loops over lanes vectorize.
-struct Lanes {
-  alignas(32) int32_t c[4][N];
-};
-
-// round(x / 255) for the blend numerators below (x <= 255*255 + 127): exact division by 255
-// as shifts and adds, valid for x < 65535.
-inline int32_t div255(int32_t x) { return (x + 1 + (x >> 8)) >> 8; }
-
-// Perspective-correct colour of one block row (GL 2.1 §3.5.1 eq 3.9): c = (c/w) / (1/w),
-// clamped to [0,1] and rounded to 8 bits (GL 2.1 §2.14.9). NaN (a degenerate 1/w) clamps to 0.
-inline void shade_lanes(const FragInputs& in, int di, int dj, Lanes& out) {
-  const PlaneF iw = in.inv_w;
-  float w[N];
-  const float iwr = iw.v0 + static_cast<float>(di) * iw.dx + static_cast<float>(dj) * iw.dy;
-  for (int i = 0; i < N; ++i) w[i] = 1.0f / (iwr + static_cast<float>(i) * iw.dx);
-  for (int k = 0; k < 4; ++k) {
-    const PlaneF p = in.color_w[k];
-    const float cr = p.v0 + static_cast<float>(di) * p.dx + static_cast<float>(dj) * p.dy;
-    for (int i = 0; i < N; ++i) {
-      float v = (cr + static_cast<float>(i) * p.dx) * w[i];
-      v = std::min(std::max(0.0f, v), 1.0f);
-      out.c[k][i] = static_cast<int32_t>(v * 255.0f + 0.5f);
-    }
-  }
-}
-
-inline void const_lanes(const uint8_t c[4], Lanes& out) {
-  for (int k = 0; k < 4; ++k)
-    for (int i = 0; i < N; ++i) out.c[k][i] = c[k];
-}
-
-template <ColorFormat F> inline uint32_t pack_pixel(uint32_t r, uint32_t g, uint32_t b, uint32_t a) {
+template <ColorFormat F> uint32_t pack_pixel(uint32_t r, uint32_t g, uint32_t b, uint32_t a) {
   using L = Layout<F>;
   return r << byte_shift(L::r) | g << byte_shift(L::g) | b << byte_shift(L::b) |
          a << byte_shift(L::a);
 }
 
-template <ColorFormat F> inline void pack_lanes(const Lanes& l, uint32_t px[N]) {
-  for (int i = 0; i < N; ++i)
-    px[i] = pack_pixel<F>(static_cast<uint32_t>(l.c[0][i]), static_cast<uint32_t>(l.c[1][i]),
-                          static_cast<uint32_t>(l.c[2][i]), static_cast<uint32_t>(l.c[3][i]));
+template <ColorFormat F> u32x4 pack4(i32x4 r, i32x4 g, i32x4 b, i32x4 a) {
+  using L = Layout<F>;
+  return reinterpret_cast<u32x4>(r) << byte_shift(L::r) |
+         reinterpret_cast<u32x4>(g) << byte_shift(L::g) |
+         reinterpret_cast<u32x4>(b) << byte_shift(L::b) |
+         reinterpret_cast<u32x4>(a) << byte_shift(L::a);
 }
 
-// Stored pixels to lanes; without alpha bits destination alpha reads as 255 (GL 2.1 §4.1.8).
-template <ColorFormat F> inline void unpack_lanes(const uint32_t px[N], bool has_alpha, Lanes& l) {
-  using L = Layout<F>;
-  const uint32_t amask = has_alpha ? 0u : 0xffu;
-  for (int i = 0; i < N; ++i) {
-    l.c[0][i] = static_cast<int32_t>((px[i] >> byte_shift(L::r)) & 0xffu);
-    l.c[1][i] = static_cast<int32_t>((px[i] >> byte_shift(L::g)) & 0xffu);
-    l.c[2][i] = static_cast<int32_t>((px[i] >> byte_shift(L::b)) & 0xffu);
-    l.c[3][i] = static_cast<int32_t>(((px[i] >> byte_shift(L::a)) & 0xffu) | amask);
+inline f32x4 channel_f(u32x4 px, int off) {
+  return __builtin_convertvector(reinterpret_cast<i32x4>((px >> byte_shift(off)) & 0xffu), f32x4);
+}
+
+// Clamp to [0,1] and round to 8 bits (GL 2.1 §2.14.9); NaN from a degenerate 1/w gives 0.
+inline i32x4 to_unorm8(f32x4 v) {
+  const f32x4 zero = {}, one = zero + 1.0f;
+  v = v > zero ? v : zero;
+  v = v < one ? v : one;
+  return __builtin_convertvector(v * 255.0f + 0.5f, i32x4);
+}
+
+// Perspective-correct colour of one block row (GL 2.1 §3.5.1 eq 3.9): c = (c/w) / (1/w).
+template <ColorFormat P> void shade_row(const FragInputs& in, int di, int dj, Row& out) {
+  const float fi = static_cast<float>(di), fj = static_cast<float>(dj);
+  const PlaneF iw = in.inv_w;
+  const float iwr = iw.v0 + fi * iw.dx + fj * iw.dy;
+  const f32x4 w[2] = {1.0f / (iwr + kLaneLo * iw.dx), 1.0f / (iwr + kLaneHi * iw.dx)};
+  for (int h = 0; h < 2; ++h) {
+    const f32x4 lane = h ? kLaneHi : kLaneLo;
+    i32x4 c[4];
+    for (int k = 0; k < 4; ++k) {
+      const PlaneF p = in.color_w[k];
+      const float cr = p.v0 + fi * p.dx + fj * p.dy;
+      c[k] = to_unorm8((cr + lane * p.dx) * w[h]);
+    }
+    out.v[h] = pack4<P>(c[0], c[1], c[2], c[3]);
   }
 }
 
-// SRC_ALPHA, ONE_MINUS_SRC_ALPHA, FUNC_ADD in exact unorm8 (blend.h blend_over_channel).
-inline void blend_over_lanes(Lanes& s, const Lanes& d) {
-  int32_t a[N];
-  for (int i = 0; i < N; ++i) a[i] = s.c[3][i];
-  for (int k = 0; k < 4; ++k)
-    for (int i = 0; i < N; ++i)
-      s.c[k][i] = div255(s.c[k][i] * a[i] + d.c[k][i] * (255 - a[i]) + 127);
+// SRC_ALPHA, ONE_MINUS_SRC_ALPHA, FUNC_ADD in exact unorm8 (blend.h blend_over_channel):
+// the products are exact in float, and round(x / 255) is (x + 127 + 1 + ((x + 127) >> 8)) >> 8.
+template <ColorFormat F> void blend_over_row(Row& s, const Row& d) {
+  using L = Layout<F>;
+  constexpr int offs[4] = {L::r, L::g, L::b, L::a};
+  for (int h = 0; h < 2; ++h) {
+    const f32x4 a = channel_f(s.v[h], L::a), ia = 255.0f - a;
+    u32x4 out = {};
+    for (int k = 0; k < 4; ++k) {
+      const f32x4 x = channel_f(s.v[h], offs[k]) * a + channel_f(d.v[h], offs[k]) * ia;
+      const i32x4 n = __builtin_convertvector(x, i32x4) + 127;
+      const i32x4 q = (n + 1 + (n >> 8)) >> 8;
+      out |= reinterpret_cast<u32x4>(q) << byte_shift(offs[k]);
+    }
+    s.v[h] = out;
+  }
 }
 
-inline void blend_generic_lanes(const BlendParams& bp, unsigned m, Lanes& s, const Lanes& d) {
+template <ColorFormat F> void unpack_pixel(uint32_t px, bool has_alpha, uint8_t c[4]) {
+  using L = Layout<F>;
+  c[0] = static_cast<uint8_t>(px >> byte_shift(L::r));
+  c[1] = static_cast<uint8_t>(px >> byte_shift(L::g));
+  c[2] = static_cast<uint8_t>(px >> byte_shift(L::b));
+  // Without alpha bits, destination alpha reads as 1 (GL 2.1 §4.1.8).
+  c[3] = has_alpha ? static_cast<uint8_t>(px >> byte_shift(L::a)) : 255;
+}
+
+// Any other blend: one fragment at a time through blend_pixel (float, blend.h).
+template <ColorFormat F>
+void blend_generic_row(const FragCtx& ctx, unsigned m, Row& s, const Row& d) {
+  alignas(16) uint32_t sp[N], dp[N];
+  std::memcpy(sp, &s, sizeof(sp));
+  std::memcpy(dp, &d, sizeof(dp));
   for (int i = 0; i < N; ++i) {
     if (((m >> i) & 1u) == 0) continue;
-    uint8_t sp[4], dp[4], op[4];
-    for (int k = 0; k < 4; ++k) {
-      sp[k] = static_cast<uint8_t>(s.c[k][i]);
-      dp[k] = static_cast<uint8_t>(d.c[k][i]);
-    }
-    blend_pixel(bp, sp, dp, op);
-    for (int k = 0; k < 4; ++k) s.c[k][i] = op[k];
+    uint8_t sc[4], dc[4], oc[4];
+    unpack_pixel<F>(sp[i], true, sc);
+    unpack_pixel<F>(dp[i], ctx.key.has_alpha, dc);
+    blend_pixel(ctx.blend, sc, dc, oc);
+    sp[i] = pack_pixel<F>(oc[0], oc[1], oc[2], oc[3]);
   }
+  std::memcpy(&s, sp, sizeof(sp));
 }
 
 // Depth test and write of one row of a block (GL 2.1 §4.1.6). Returns the fragments of `m`
 // that passed. z is the plane value in depth-buffer units, clamped to [0, 2^bits - 1] (window
 // z clamped to [0,1], GL 2.1 §2.11.1) and rounded to the nearest representable value.
-template <DepthPath D> inline bool depth_pass(const FragCtx& ctx, uint32_t z, uint32_t old) {
-  if constexpr (D == DepthPath::LessWrite) {
-    return z < old;
-  } else if constexpr (D == DepthPath::LequalWrite) {
-    return z <= old;
-  } else {
-    const unsigned rel = z < old ? 1u : (z == old ? 2u : 4u);
-    return (ctx.depth_func & rel) != 0;
-  }
-}
-
 template <DepthPath D>
-inline unsigned depth_row(const FragCtx& ctx, const FragInputs& in, int bx, int y, int di,
-                          int dj, unsigned m) {
+unsigned depth_row(const FragCtx& ctx, const FragInputs& in, int bx, int y, int di, int dj,
+                   unsigned m) {
   uint32_t* const d = ctx.depth + static_cast<ptrdiff_t>(y) * ctx.depth_stride + bx;
   const PlaneD zp = in.z;
   const double zr = zp.v0 + di * zp.dx + dj * zp.dy;
-  const double zmax = ctx.depth_max;
-  const bool write = D != DepthPath::Generic || ctx.depth_write;
-  uint32_t zq[N];
-  for (int i = 0; i < N; ++i) {
-    const double z = std::min(std::max(0.0, zr + i * zp.dx), zmax);
-    zq[i] = static_cast<uint32_t>(static_cast<int64_t>(z + 0.5));
+  const f64x2 zero = {}, zmax = zero + ctx.depth_max;
+  // Built as vectors directly: storing lanes one by one and reloading them as a vector
+  // would stall on store forwarding.
+  uint32_t q[N];
+  for (int h = 0; h < N / 2; ++h) {
+    const f64x2 lane = {2.0 * h, 2.0 * h + 1.0};
+    f64x2 z = zr + lane * zp.dx;
+    z = z > zero ? z : zero;
+    z = z < zmax ? z : zmax;
+    z += 0.5;
+    q[2 * h] = static_cast<uint32_t>(static_cast<int64_t>(z[0]));
+    q[2 * h + 1] = static_cast<uint32_t>(static_cast<int64_t>(z[1]));
   }
-  unsigned pass = 0;
-  if (m == 0xffu) {
-    uint32_t old[N];
+  const u32x4 zv[2] = {{q[0], q[1], q[2], q[3]}, {q[4], q[5], q[6], q[7]}};
+  const uint32_t* const zq = q;
+  const bool write = D != DepthPath::Generic || ctx.depth_write;
+  if (bx + N <= ctx.fb_width) {
+    // The whole row lies in the buffer: test all eight lanes and keep the covered ones.
+    u32x4 old[2];
     std::memcpy(old, d, sizeof(old));
-    for (int i = 0; i < N; ++i) pass |= static_cast<unsigned>(depth_pass<D>(ctx, zq[i], old[i])) << i;
-    if (write && pass != 0) {
-      for (int i = 0; i < N; ++i) old[i] = ((pass >> i) & 1u) ? zq[i] : old[i];
+    i32x4 pass[2];
+    bits_to_lanes(m, pass[0], pass[1]);
+    for (int h = 0; h < 2; ++h) {
+      if constexpr (D == DepthPath::LessWrite) {
+        pass[h] &= zv[h] < old[h];
+      } else if constexpr (D == DepthPath::LequalWrite) {
+        pass[h] &= zv[h] <= old[h];
+      } else {
+        const i32x4 f = {}, lt = f - static_cast<int32_t>(ctx.depth_func & 1u);
+        const i32x4 eq = f - static_cast<int32_t>((ctx.depth_func >> 1) & 1u);
+        const i32x4 gt = f - static_cast<int32_t>((ctx.depth_func >> 2) & 1u);
+        pass[h] &= ((zv[h] < old[h]) & lt) | ((zv[h] == old[h]) & eq) | ((zv[h] > old[h]) & gt);
+      }
+    }
+    const unsigned bits = lane_bits(pass[0], pass[1]);
+    if (write && bits != 0) {
+      for (int h = 0; h < 2; ++h) old[h] = pass[h] ? zv[h] : old[h];
       std::memcpy(d, old, sizeof(old));
     }
-    return pass;
+    return bits;
   }
+  // The last block of a row whose width is not a multiple of 8: fragment by fragment.
+  unsigned bits = 0;
   for (int i = 0; i < N; ++i) {
     if (((m >> i) & 1u) == 0) continue;
-    if (depth_pass<D>(ctx, zq[i], d[i])) {
-      pass |= 1u << i;
+    bool pass;
+    if constexpr (D == DepthPath::LessWrite) {
+      pass = zq[i] < d[i];
+    } else if constexpr (D == DepthPath::LequalWrite) {
+      pass = zq[i] <= d[i];
+    } else {
+      const unsigned rel = zq[i] < d[i] ? 1u : (zq[i] == d[i] ? 2u : 4u);
+      pass = (ctx.depth_func & rel) != 0;
+    }
+    if (pass) {
+      bits |= 1u << i;
       if (write) d[i] = zq[i];
     }
   }
-  return pass;
+  return bits;
 }
 
-// Blend, colour mask and store of one row of a 4-byte format (GL 2.1 §4.1.8, §4.2.2).
-// Full rows (all eight fragments) load and store the row whole.
+// Blend, colour mask and store of one row of a 4-byte format (GL 2.1 §4.1.8, §4.2.2). Full
+// rows load and store the eight pixels whole; others touch only their fragments.
 template <ColorFormat F, ColorPath C, BlendPath B>
-inline void write_row4(const FragCtx& ctx, uint8_t* row, unsigned m, Lanes& s) {
-  const bool full = m == 0xffu;
-  uint32_t px[N];
-  if constexpr (B != BlendPath::Off || C == ColorPath::Partial) {
-    uint32_t dst[N];
-    if (full) {
-      std::memcpy(dst, row, sizeof(dst));
-    } else {
-      for (int i = 0; i < N; ++i) {
-        dst[i] = 0;
-        if ((m >> i) & 1u) std::memcpy(&dst[i], row + 4 * i, 4);
-      }
-    }
-    if constexpr (B != BlendPath::Off) {
-      Lanes d;
-      unpack_lanes<F>(dst, ctx.key.has_alpha, d);
-      if constexpr (B == BlendPath::Over)
-        blend_over_lanes(s, d);
-      else
-        blend_generic_lanes(ctx.blend, m, s, d);
-    }
-    pack_lanes<F>(s, px);
+void write_row4(const FragCtx& ctx, uint8_t* row, unsigned m, bool in_buffer, Row& s) {
+  constexpr bool kReadsDst = B != BlendPath::Off || C == ColorPath::Partial;
+  if (m == 0xffu && !kReadsDst) {
+    std::memcpy(row, &s, sizeof(s));
+    return;
+  }
+  if (in_buffer) {
+    // The whole row lies in the buffer: compute all eight lanes and select the covered ones.
+    Row dst;
+    std::memcpy(&dst, row, sizeof(dst));
+    if constexpr (B == BlendPath::Over)
+      blend_over_row<F>(s, dst);
+    else if constexpr (B == BlendPath::Generic)
+      blend_generic_row<F>(ctx, m, s, dst);
     if constexpr (C == ColorPath::Partial) {
-      const uint32_t keep = ctx.color_keep;
-      for (int i = 0; i < N; ++i) px[i] = (dst[i] & keep) | (px[i] & ~keep);
+      const u32x4 keep = u32x4{} + ctx.color_keep;
+      for (int h = 0; h < 2; ++h) s.v[h] = (dst.v[h] & keep) | (s.v[h] & ~keep);
     }
-  } else {
-    pack_lanes<F>(s, px);
+    i32x4 lanes[2];
+    bits_to_lanes(m, lanes[0], lanes[1]);
+    for (int h = 0; h < 2; ++h) dst.v[h] = lanes[h] ? s.v[h] : dst.v[h];
+    std::memcpy(row, &dst, sizeof(dst));
+    return;
   }
-  if (full) {
-    std::memcpy(row, px, sizeof(px));
-  } else {
+  // The last block of a row whose width is not a multiple of 8: fragment by fragment.
+  Row dst;
+  alignas(16) uint32_t tmp[N] = {};
+  if constexpr (kReadsDst) {
     for (int i = 0; i < N; ++i)
-      if ((m >> i) & 1u) std::memcpy(row + 4 * i, &px[i], 4);
+      if ((m >> i) & 1u) std::memcpy(&tmp[i], row + 4 * i, 4);
   }
+  std::memcpy(&dst, tmp, sizeof(dst));
+  if constexpr (B == BlendPath::Over)
+    blend_over_row<F>(s, dst);
+  else if constexpr (B == BlendPath::Generic)
+    blend_generic_row<F>(ctx, m, s, dst);
+  if constexpr (C == ColorPath::Partial) {
+    const u32x4 keep = u32x4{} + ctx.color_keep;
+    for (int h = 0; h < 2; ++h) s.v[h] = (dst.v[h] & keep) | (s.v[h] & ~keep);
+  }
+  std::memcpy(tmp, &s, sizeof(tmp));
+  for (int i = 0; i < N; ++i)
+    if ((m >> i) & 1u) std::memcpy(row + 4 * i, &tmp[i], 4);
 }
 
-// The same for 3-byte RGB8 pixels, one fragment at a time.
+// The same for 3-byte RGB8 pixels, one fragment at a time; `s` is packed as RGBA8.
 template <ColorPath C, BlendPath B>
-inline void write_row3(const FragCtx& ctx, uint8_t* row, unsigned m, Lanes& s) {
-  if constexpr (B != BlendPath::Off) {
-    Lanes d;
-    for (int i = 0; i < N; ++i) {
-      const uint8_t* p = row + 3 * i;
-      const bool on = (m >> i) & 1u;
-      for (int k = 0; k < 3; ++k) d.c[k][i] = on ? p[k] : 0;
-      d.c[3][i] = 255;
-    }
-    if constexpr (B == BlendPath::Over)
-      blend_over_lanes(s, d);
-    else
-      blend_generic_lanes(ctx.blend, m, s, d);
-  }
+void write_row3(const FragCtx& ctx, uint8_t* row, unsigned m, const Row& s) {
+  alignas(16) uint32_t sp[N];
+  std::memcpy(sp, &s, sizeof(sp));
   uint8_t keep[4];
   std::memcpy(keep, &ctx.color_keep, 4);
   for (int i = 0; i < N; ++i) {
     if (((m >> i) & 1u) == 0) continue;
     uint8_t* p = row + 3 * i;
-    for (int k = 0; k < 3; ++k) {
-      const auto v = static_cast<uint8_t>(s.c[k][i]);
-      p[k] = C == ColorPath::Partial ? static_cast<uint8_t>((p[k] & keep[k]) | (v & ~keep[k])) : v;
+    uint8_t c[4];
+    unpack_pixel<ColorFormat::RGBA8>(sp[i], true, c);
+    if constexpr (B != BlendPath::Off) {
+      const uint8_t d[4] = {p[0], p[1], p[2], 255}; // no alpha: destination alpha is 1
+      if constexpr (B == BlendPath::Over) {
+        for (int k = 0; k < 3; ++k) c[k] = blend_over_channel(c[k], d[k], c[3]);
+      } else {
+        uint8_t o[4];
+        blend_pixel(ctx.blend, c, d, o);
+        std::memcpy(c, o, 4);
+      }
     }
+    for (int k = 0; k < 3; ++k)
+      p[k] = C == ColorPath::Partial ? static_cast<uint8_t>((p[k] & keep[k]) | (c[k] & ~keep[k]))
+                                     : c[k];
   }
 }
 
 template <DepthPath D, ColorFormat F, ColorPath C, BlendPath B, ShadePath S>
 void block_loop(const FragCtx& ctx, const FragInputs& in, int bx, int by, uint64_t mask) {
   using L = Layout<F>;
-  // A constant colour with a plain store is one packed value for the whole block.
-  [[maybe_unused]] uint32_t const_px = 0;
-  if constexpr (S == ShadePath::Const && L::bpp == 4)
-    const_px = pack_pixel<F>(in.const_color[0], in.const_color[1], in.const_color[2],
-                             in.const_color[3]);
+  // Pixels travel packed in the format's byte order; RGB8 rows are packed as RGBA8.
+  constexpr ColorFormat P = L::bpp == 4 ? F : ColorFormat::RGBA8;
+  [[maybe_unused]] Row const_row{};
+  if constexpr (S == ShadePath::Const) {
+    const uint32_t px = pack_pixel<P>(in.const_color[0], in.const_color[1], in.const_color[2],
+                                      in.const_color[3]);
+    const_row.v[0] = const_row.v[1] = u32x4{} + px;
+  }
   while (mask != 0) {
     const int j = std::countr_zero(mask) >> 3;
     unsigned m = static_cast<unsigned>(mask >> (8 * j)) & 0xffu;
@@ -254,27 +308,15 @@ void block_loop(const FragCtx& ctx, const FragInputs& in, int bx, int by, uint64
     if constexpr (C != ColorPath::None) {
       uint8_t* const row = ctx.color + static_cast<ptrdiff_t>(y) * ctx.color_stride +
                            static_cast<ptrdiff_t>(bx) * L::bpp;
-      if constexpr (S == ShadePath::Const && L::bpp == 4 && B == BlendPath::Off &&
-                    C == ColorPath::All) {
-        if (m == 0xffu) {
-          uint32_t px[N];
-          for (int i = 0; i < N; ++i) px[i] = const_px;
-          std::memcpy(row, px, sizeof(px));
-        } else {
-          for (int i = 0; i < N; ++i)
-            if ((m >> i) & 1u) std::memcpy(row + 4 * i, &const_px, 4);
-        }
-      } else {
-        Lanes s;
-        if constexpr (S == ShadePath::Const)
-          const_lanes(in.const_color, s);
-        else
-          shade_lanes(in, di, dj, s);
-        if constexpr (L::bpp == 4)
-          write_row4<F, C, B>(ctx, row, m, s);
-        else
-          write_row3<C, B>(ctx, row, m, s);
-      }
+      Row s;
+      if constexpr (S == ShadePath::Const)
+        s = const_row;
+      else
+        shade_row<P>(in, di, dj, s);
+      if constexpr (L::bpp == 4)
+        write_row4<F, C, B>(ctx, row, m, bx + N <= ctx.fb_width, s);
+      else
+        write_row3<C, B>(ctx, row, m, s);
     }
   }
 }
@@ -361,6 +403,7 @@ void prepare_fragments(const RasterState& rs, const Framebuffer& fb, FragCtx& ct
   case ColorFormat::RGB8: ctx.color_keep = keep_mask<ColorFormat::RGB8>(k.color_mask); break;
   }
   if (k.blend) ctx.blend = make_blend_params(rs);
+  ctx.fb_width = fb.width;
   ctx.clip_x0 = 0;
   ctx.clip_y0 = 0;
   ctx.clip_x1 = fb.width - 1;

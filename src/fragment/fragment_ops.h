@@ -61,6 +61,9 @@ struct FragCtx {
   // Fragments outside this rectangle (inclusive) are never produced: the framebuffer today,
   // the framebuffer intersected with the scissor box later.
   int clip_x0 = 0, clip_y0 = 0, clip_x1 = -1, clip_y1 = -1;
+  // Rows of a block that lie entirely inside the buffer (bx + 8 <= fb_width) are loaded and
+  // stored whole, with the coverage applied as a lane select.
+  int fb_width = 0;
   bool noop = true;          // nothing can change: no colour write and no depth test
   bool needs_color = false;  // the colour path reads the primitive's colour
   bool needs_depth = false;  // the depth path reads the primitive's z

@@ -377,6 +377,13 @@ bool read_color(const Framebuffer& fb, const Span& s, int x, int y, GLenum forma
     }
     return true;
   }
+  if (format == GL_RGBA && type == GL_UNSIGNED_BYTE) {
+    // The colour path's intermediate is already the client layout: fetch straight into dst.
+    for (int wy = s.y0; wy < s.y1; ++wy)
+      fetch_rgba(fb, s.x0, wy, s.x1 - s.x0,
+                 dst + pl.origin + static_cast<size_t>(wy - y) * pl.row_stride + lead);
+    return true;
+  }
   ColorPacker packer; // about 7 KB of tables, on the stack
   if (!packer.init(format, type, pack.swap_bytes)) return false;
   uint8_t rgba[kChunk * 4];

@@ -78,29 +78,36 @@ private:
     line_clipped(a, b);
   }
 
-  // Triangle a, b, c with c provoking. The all-inside FILL case is the hot path: snap,
-  // area, cull, rasterize.
+  // Triangle a, b, c with c provoking.
   void triangle(const PVertex& a, const PVertex& b, const PVertex& c, unsigned edges) {
+    triangle(a, b, c, edges, c);
+  }
+
+  // Triangle a, b, c whose flat colour comes from `pv`. The all-inside FILL case is the hot
+  // path: snap, area, cull, rasterize.
+  void triangle(const PVertex& a, const PVertex& b, const PVertex& c, unsigned edges,
+                const PVertex& pv) {
     if ((a.clipmask & b.clipmask & c.clipmask) != 0) return;
     if ((a.clipmask | b.clipmask | c.clipmask) != 0) {
-      triangle_clipped(a, b, c, edges);
+      triangle_clipped(a, b, c, edges, pv);
       return;
     }
     const int64_t area2 = fixed_area2(a, b, c);
     const bool back = is_back_facing(face_, area2);
     if (is_culled(face_, back)) return;
     if (fill_fast_) {
-      if (area2 != 0) sink_.triangle(a, b, c, c, back);
+      if (area2 != 0) sink_.triangle(a, b, c, pv, back);
       return;
     }
     const PVertex* v[3] = {&a, &b, &c};
     const bool e[3] = {(edges & kEdgeAB) != 0, (edges & kEdgeBC) != 0, (edges & kEdgeCA) != 0};
     // Mesa outlines an unclipped triangle starting with its closing edge c->a.
-    emit_polygon(face_, sink_, v, e, 3, 2, c, back, area2);
+    emit_polygon(face_, sink_, v, e, 3, 2, pv, back, area2);
   }
 
   void line_clipped(const PVertex& a, const PVertex& b);
-  void triangle_clipped(const PVertex& a, const PVertex& b, const PVertex& c, unsigned edges);
+  void triangle_clipped(const PVertex& a, const PVertex& b, const PVertex& c, unsigned edges,
+                        const PVertex& pv);
 
   Sink& sink_;
   FaceState face_;
@@ -123,7 +130,8 @@ template <class Sink>
 
 template <class Sink>
 [[gnu::noinline]] void Assembler<Sink>::triangle_clipped(const PVertex& a, const PVertex& b,
-                                                         const PVertex& c, unsigned edges) {
+                                                         const PVertex& c, unsigned edges,
+                                                         const PVertex& pv) {
   ClipScratch scratch;
   ClipPolygon poly;
   poly.n = 3;
@@ -140,8 +148,8 @@ template <class Sink>
   const int64_t area2 = polygon_area2(poly.v, poly.n);
   const bool back = is_back_facing(face_, area2);
   if (is_culled(face_, back)) return;
-  // c stays the provoking vertex even when clipping removed it (GL 2.1 §2.14.7).
-  emit_polygon(face_, sink_, poly.v, poly.edge, poly.n, 0, c, back, area2);
+  // The provoking vertex stays even when clipping removed it (GL 2.1 §2.14.7).
+  emit_polygon(face_, sink_, poly.v, poly.edge, poly.n, 0, pv, back, area2);
 }
 
 template <class Sink>
@@ -189,14 +197,15 @@ void Assembler<Sink>::run(GLenum mode, const Fetch& f, size_t count) {
       triangle(f(0), f(i + 1), f(i + 2), kEdgeAll);
     break;
   case GL_QUADS:
-    // Vertex 4i provokes. Split along q1-q3 as Mesa does; the diagonal is not an edge.
+    // Vertex 4i provokes (Table 2.12). Split as a fan from q0, along q0-q2, as llvmpipe does
+    // (the conformance scene quad_split_colors pins it); the diagonal is not an edge.
     for (size_t i = 0; i + 3 < count; i += 4) {
       const PVertex& q0 = f(i);
       const PVertex& q1 = f(i + 1);
       const PVertex& q2 = f(i + 2);
       const PVertex& q3 = f(i + 3);
-      triangle(q0, q1, q3, flag_bit(q0, kEdgeAB) | flag_bit(q3, kEdgeCA));
-      triangle(q1, q2, q3, flag_bit(q1, kEdgeAB) | flag_bit(q2, kEdgeBC));
+      triangle(q0, q1, q2, flag_bit(q0, kEdgeAB) | flag_bit(q1, kEdgeBC), q3);
+      triangle(q0, q2, q3, flag_bit(q2, kEdgeBC) | flag_bit(q3, kEdgeCA), q3);
     }
     break;
   case GL_QUAD_STRIP:

@@ -4,8 +4,10 @@
 // by pixel. Coverage masks go to the fragment stage's key-selected block loop.
 #include <algorithm>
 #include <cstdint>
+#include <cstdlib>
 
 #include "fragment/fragment_ops.h"
+#include "fragment/simd.h"
 #include "raster/raster.h"
 #include "raster/setup.h"
 
@@ -17,9 +19,10 @@ namespace {
 inline int64_t floor_div(int64_t a, int64_t b) { return a >= 0 ? a / b : -((-a + b - 1) / b); }
 inline int64_t ceil_div(int64_t a, int64_t b) { return -floor_div(-a, b); }
 
-// Per-pixel coverage of one block within the pixel bounds [c0,c1]x[r0,r1] of the block.
-inline uint64_t partial_mask(const TriEdges& te, const int64_t e[3], int c0, int c1, int r0,
-                             int r1) {
+// Per-pixel coverage of one block within the pixel bounds [c0,c1]x[r0,r1] of the block,
+// in exact 64-bit arithmetic.
+inline uint64_t partial_mask64(const TriEdges& te, const int64_t e[3], int c0, int c1, int r0,
+                               int r1) {
   uint64_t mask = 0;
   for (int r = r0; r <= r1; ++r) {
     int64_t e0 = e[0] + r * te.e[0].sy + c0 * te.e[0].sx;
@@ -32,6 +35,50 @@ inline uint64_t partial_mask(const TriEdges& te, const int64_t e[3], int c0, int
       e1 += te.e[1].sx;
       e2 += te.e[2].sx;
     }
+  }
+  return mask;
+}
+
+// The same four lanes at a time in 32 bits, for blocks where every edge value fits: the
+// edge functions of a block on an edge are bounded by |E(corner)| + 7 (|sx| + |sy|).
+struct Edges32 {
+  bool usable = false;     // the steps themselves are small enough
+  int64_t limit[3] = {};   // |E(block corner)| must stay below this
+  i32x4 lane_lo[3], lane_hi[3]; // column offsets 0..3 and 4..7 times sx
+  int32_t sy[3] = {};
+};
+
+inline Edges32 make_edges32(const TriEdges& te) {
+  Edges32 v;
+  constexpr int64_t kMax = int64_t{1} << 31;
+  v.usable = true;
+  for (int i = 0; i < 3; ++i) {
+    const int64_t sx = te.e[i].sx, sy = te.e[i].sy;
+    const int64_t span = (kBlockSize - 1) * ((sx < 0 ? -sx : sx) + (sy < 0 ? -sy : sy));
+    if (span >= kMax / 2) {
+      v.usable = false;
+      return v;
+    }
+    v.limit[i] = kMax - span;
+    const auto sx32 = static_cast<int32_t>(sx);
+    v.lane_lo[i] = i32x4{0, 1, 2, 3} * sx32;
+    v.lane_hi[i] = i32x4{4, 5, 6, 7} * sx32;
+    v.sy[i] = static_cast<int32_t>(sy);
+  }
+  return v;
+}
+
+inline uint64_t partial_mask32(const Edges32& v, const int64_t e[3]) {
+  i32x4 row[3];
+  for (int i = 0; i < 3; ++i) row[i] = i32x4{} + static_cast<int32_t>(e[i]);
+  const i32x4 zero = {};
+  uint64_t mask = 0;
+  for (int r = 0; r < kBlockSize; ++r) {
+    const i32x4 lo = (row[0] + v.lane_lo[0]) | (row[1] + v.lane_lo[1]) | (row[2] + v.lane_lo[2]);
+    const i32x4 hi = (row[0] + v.lane_hi[0]) | (row[1] + v.lane_hi[1]) | (row[2] + v.lane_hi[2]);
+    mask |= static_cast<uint64_t>(lane_bits(lo >= zero, hi >= zero)) << (8 * r);
+    if (r + 1 < kBlockSize) // stay within the bound: no step past the last row
+      for (int i = 0; i < 3; ++i) row[i] += v.sy[i];
   }
   return mask;
 }
@@ -53,6 +100,7 @@ void traverse(const TriEdges& te, const FragCtx& ctx, const FragInputs& in, Bloc
   const int bx_first = te.minx & ~(B - 1);
   const int bx_last = te.maxx & ~(B - 1);
   const bool narrow = te.maxx - te.minx >= kNarrowWidth;
+  const Edges32 e32 = make_edges32(te);
 
   for (int by = te.miny & ~(B - 1); by <= te.maxy; by += B) {
     int64_t lo = bx_first, hi = bx_last;
@@ -86,9 +134,13 @@ void traverse(const TriEdges& te, const FragCtx& ctx, const FragInputs& in, Bloc
           // Every centre of the block is inside; only the bounding box (which is clipped to
           // the clip rectangle) limits it.
           mask = rect_block_mask(te.minx, te.miny, te.maxx, te.maxy, bx, by);
+        } else if (e32.usable && std::abs(e[0]) < e32.limit[0] &&
+                   std::abs(e[1]) < e32.limit[1] && std::abs(e[2]) < e32.limit[2]) {
+          mask = partial_mask32(e32, e) &
+                 rect_block_mask(te.minx, te.miny, te.maxx, te.maxy, bx, by);
         } else {
           const int c0 = std::max(te.minx - bx, 0), c1 = std::min(te.maxx - bx, B - 1);
-          mask = partial_mask(te, e, c0, c1, r0, r1);
+          mask = partial_mask64(te, e, c0, c1, r0, r1);
         }
         if (mask != 0) fn(ctx, in, bx, by, mask);
       }

@@ -8,79 +8,6 @@ namespace pineda {
 
 namespace {
 
-bool is_packed_type(GLenum type) {
-  switch (type) {
-  case GL_UNSIGNED_BYTE_3_3_2:
-  case GL_UNSIGNED_BYTE_2_3_3_REV:
-  case GL_UNSIGNED_SHORT_5_6_5:
-  case GL_UNSIGNED_SHORT_5_6_5_REV:
-  case GL_UNSIGNED_SHORT_4_4_4_4:
-  case GL_UNSIGNED_SHORT_4_4_4_4_REV:
-  case GL_UNSIGNED_SHORT_5_5_5_1:
-  case GL_UNSIGNED_SHORT_1_5_5_5_REV:
-  case GL_UNSIGNED_INT_8_8_8_8:
-  case GL_UNSIGNED_INT_8_8_8_8_REV:
-  case GL_UNSIGNED_INT_10_10_10_2:
-  case GL_UNSIGNED_INT_2_10_10_10_REV: return true;
-  default: return false;
-  }
-}
-
-bool is_read_type(GLenum type) {
-  switch (type) {
-  case GL_UNSIGNED_BYTE:
-  case GL_BYTE:
-  case GL_UNSIGNED_SHORT:
-  case GL_SHORT:
-  case GL_UNSIGNED_INT:
-  case GL_INT:
-  case GL_FLOAT:
-  case GL_BITMAP: return true;
-  default: return is_packed_type(type);
-  }
-}
-
-// Components a packed type holds (GL 2.1 Table 3.8): the format must have as many.
-int packed_components(GLenum type) {
-  switch (type) {
-  case GL_UNSIGNED_BYTE_3_3_2:
-  case GL_UNSIGNED_BYTE_2_3_3_REV:
-  case GL_UNSIGNED_SHORT_5_6_5:
-  case GL_UNSIGNED_SHORT_5_6_5_REV: return 3;
-  default: return 4;
-  }
-}
-
-int format_components(GLenum format) {
-  switch (format) {
-  case GL_RGBA:
-  case GL_BGRA: return 4;
-  case GL_RGB:
-  case GL_BGR: return 3;
-  case GL_LUMINANCE_ALPHA: return 2;
-  default: return 1;
-  }
-}
-
-bool is_read_format(GLenum format) {
-  switch (format) {
-  case GL_COLOR_INDEX:
-  case GL_STENCIL_INDEX:
-  case GL_DEPTH_COMPONENT:
-  case GL_RED:
-  case GL_GREEN:
-  case GL_BLUE:
-  case GL_ALPHA:
-  case GL_RGB:
-  case GL_RGBA:
-  case GL_BGR:
-  case GL_BGRA:
-  case GL_LUMINANCE:
-  case GL_LUMINANCE_ALPHA: return true;
-  default: return false;
-  }
-}
-
 // GL 2.1 §3.6.1 glPixelStore: the parameter and its value check.
 void pixel_store(const char* func, GLenum pname, double value) {
   PINEDA_CTX_OUTSIDE(func);
@@ -191,15 +118,10 @@ void GLAPIENTRY ReadPixels(GLint x, GLint y, GLsizei w, GLsizei h, GLenum format
                            void* pixels) {
   PINEDA_CTX_OUTSIDE("glReadPixels");
   if (w < 0 || h < 0) return record_error(ctx, GL_INVALID_VALUE, "glReadPixels");
-  if (!is_read_format(format)) return record_error(ctx, GL_INVALID_ENUM, "glReadPixels", format);
-  if (!is_read_type(type)) return record_error(ctx, GL_INVALID_ENUM, "glReadPixels", type);
-  // GL 2.1 §3.6.4: BITMAP only goes with COLOR_INDEX or STENCIL_INDEX.
-  if (type == GL_BITMAP && format != GL_COLOR_INDEX && format != GL_STENCIL_INDEX)
-    return record_error(ctx, GL_INVALID_ENUM, "glReadPixels", type);
-  // GL 2.1 §3.6.4: a packed type needs a format with matching component count.
-  if (is_packed_type(type) && (format_components(format) != packed_components(type) ||
-                               format == GL_LUMINANCE_ALPHA))
-    return record_error(ctx, GL_INVALID_OPERATION, "glReadPixels");
+  // Format/type legality (GL 2.1 §3.6.4, §4.3.2): unknown enums are INVALID_ENUM, a packed
+  // type with a format of another component count is INVALID_OPERATION.
+  const GLenum err = read_format_type_error(format, type);
+  if (err != GL_NO_ERROR) return record_error(ctx, err, "glReadPixels", format);
   // GL 2.1 §4.3.2: COLOR_INDEX in RGBA mode, and depth/stencil reads with no such buffer,
   // are INVALID_OPERATION.
   if (format == GL_COLOR_INDEX) return record_error(ctx, GL_INVALID_OPERATION, "glReadPixels");
@@ -207,7 +129,6 @@ void GLAPIENTRY ReadPixels(GLint x, GLint y, GLsizei w, GLsizei h, GLenum format
     return record_error(ctx, GL_INVALID_OPERATION, "glReadPixels");
   if (format == GL_STENCIL_INDEX && ctx->fb.stencil == nullptr)
     return record_error(ctx, GL_INVALID_OPERATION, "glReadPixels");
-  if (type == GL_BITMAP) return record_error(ctx, GL_INVALID_OPERATION, "glReadPixels");
   if (pixels == nullptr || w == 0 || h == 0 || ctx->fb.color == nullptr) return;
   read_pixels(ctx->fb, x, y, w, h, format, type, ctx->pack, pixels);
 }

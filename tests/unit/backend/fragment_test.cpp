@@ -205,24 +205,52 @@ TEST(Fragment, BlendEveryFactorAndEquationMatchesReference) {
 }
 
 TEST(Fragment, BlendOverFastPathIsExact) {
-  // SRC_ALPHA, ONE_MINUS_SRC_ALPHA in unorm8: round((s*a + d*(255-a)) / 255).
-  for (int a = 0; a <= 255; a += 5) {
-    for (int d = 0; d <= 255; d += 15) {
-      TestFb t(1, 1, ColorFormat::RGBA8, 0);
-      uint8_t* p = t.pixel(0, 0);
-      p[0] = static_cast<uint8_t>(d);
-      p[3] = static_cast<uint8_t>(255 - d);
-      RasterState rs;
-      rs.blend = true;
-      rs.blend_src_rgb = rs.blend_src_a = GL_SRC_ALPHA;
-      rs.blend_dst_rgb = rs.blend_dst_a = GL_ONE_MINUS_SRC_ALPHA;
-      DrawCall dc{&rs, &t.fb};
-      raster_point(dc, vtx(0.5f, 0.5f, 0.5f, 1, {200 / 255.0f, 0, 0, a / 255.0f}));
-      const double ar = a / 255.0;
-      EXPECT_EQ(t.rgba(0, 0)[0], std::lround(200 * ar + d * (1 - ar)));
-      EXPECT_EQ(t.rgba(0, 0)[3], std::lround(a * ar + (255 - d) * (1 - ar)));
+  // SRC_ALPHA, ONE_MINUS_SRC_ALPHA in unorm8: round((s*a + d*(255-a)) / 255), in every
+  // format, on full rows (width 16) and on the partial last block of a 13-pixel row.
+  for (ColorFormat fmt : kFormats) {
+    for (int width : {16, 13}) {
+      for (int a = 0; a <= 255; a += 15) {
+        TestFb t(width, 1, fmt, 0);
+        for (int x = 0; x < width; ++x) {
+          uint8_t* p = t.pixel(x, 0);
+          const int d = (x * 37) % 256;
+          for (int k = 0; k < bytes_per_pixel(fmt); ++k) p[k] = static_cast<uint8_t>(d);
+        }
+        RasterState rs;
+        rs.blend = true;
+        rs.blend_src_rgb = rs.blend_src_a = GL_SRC_ALPHA;
+        rs.blend_dst_rgb = rs.blend_dst_a = GL_ONE_MINUS_SRC_ALPHA;
+        DrawCall dc{&rs, &t.fb};
+        fill_screen(dc, 0.5f, {200 / 255.0f, 10 / 255.0f, 1.0f, a / 255.0f});
+        const double ar = a / 255.0;
+        for (int x = 0; x < width; ++x) {
+          const int d = (x * 37) % 256;
+          const auto c = t.rgba(x, 0);
+          ASSERT_EQ(c[0], std::lround(200 * ar + d * (1 - ar))) << int(fmt) << " x " << x;
+          ASSERT_EQ(c[1], std::lround(10 * ar + d * (1 - ar)));
+          ASSERT_EQ(c[2], std::lround(255 * ar + d * (1 - ar)));
+          if (fmt != ColorFormat::RGB8) {
+            ASSERT_EQ(c[3], std::lround(a * ar + d * (1 - ar)));
+          }
+        }
+      }
     }
   }
+}
+
+TEST(Fragment, DepthOnlyWhenColorMaskIsOff) {
+  TestFb t(12, 10);
+  t.fill_color(9);
+  RasterState rs;
+  rs.depth_test = true;
+  for (bool& w : rs.color_write) w = false;
+  DrawCall dc{&rs, &t.fb};
+  fill_screen(dc, 0.25f, {1, 1, 1, 1});
+  for (int y = 0; y < 10; ++y)
+    for (int x = 0; x < 12; ++x) {
+      ASSERT_EQ(t.depth(x, y), static_cast<uint32_t>(std::lround(0.25 * 16777215.0)));
+      ASSERT_EQ(t.rgba(x, y)[0], 9);
+    }
 }
 
 TEST(Fragment, ColorMaskEveryCombinationEveryFormat) {

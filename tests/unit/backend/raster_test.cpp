@@ -7,7 +7,7 @@
 #include <cmath>
 #include <random>
 #include <set>
-#include <string>
+#include <sstream>
 #include <utility>
 #include <vector>
 
@@ -194,11 +194,11 @@ TEST(Line, MatchesExactDiamondExitReference) {
     const auto got = line_pixels(p[0], p[1], p[2], p[3], size);
     const auto want = ref_line(p[0], p[1], p[2], p[3], size);
     if (got != want && ++mismatches < 8) {
-      std::string g, w;
-      for (auto [x, y] : got) g += " " + std::to_string(x) + "," + std::to_string(y);
-      for (auto [x, y] : want) w += " " + std::to_string(x) + "," + std::to_string(y);
+      std::ostringstream g, w;
+      for (auto [x, y] : got) g << ' ' << x << ',' << y;
+      for (auto [x, y] : want) w << ' ' << x << ',' << y;
       ADD_FAILURE() << "(" << p[0] << "," << p[1] << ")-(" << p[2] << "," << p[3] << ")\n got "
-                    << g << "\nwant " << w;
+                    << g.str() << "\nwant " << w.str();
     }
   }
   EXPECT_EQ(mismatches, 0);
