@@ -120,8 +120,10 @@ Grid make_grid(float w, float h, int n, std::uint32_t seed) {
     for (int i = 0; i <= n; ++i) {
       const float jitter_x = (i > 0 && i < n) ? rng.range(-0.3f, 0.3f) : 0.0f;
       const float jitter_y = (j > 0 && j < n) ? rng.range(-0.3f, 0.3f) : 0.0f;
-      g.vertices.push_back(vtx(4.0f + (w - 8.0f) * (i + jitter_x) / n,
-                               4.0f + (h - 8.0f) * (j + jitter_y) / n, rng.below(16)));
+      // Offsets of 0.3 / 0.2 pixel keep the grid's straight border off pixel boundaries, where a
+      // line (in GL_LINE mode) would touch two rows of diamonds at once (GL 2.1 §3.4.1).
+      g.vertices.push_back(vtx(4.3f + (w - 8.0f) * (i + jitter_x) / n,
+                               4.2f + (h - 8.0f) * (j + jitter_y) / n, rng.below(16)));
     }
   }
   for (int j = 0; j < n; ++j) {

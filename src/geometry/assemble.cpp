@@ -22,6 +22,11 @@ namespace {
 constexpr unsigned kEdgeAB = 1u, kEdgeBC = 2u, kEdgeCA = 4u;
 constexpr unsigned kEdgeAll = 7u;
 
+// Bits whose AND over a primitive's vertices proves it lies outside one plane. kClipGuard
+// stands for four planes at once, so a shared guard bit proves nothing; the guard band
+// encloses the frustum, so whatever is outside one guard plane is outside a frustum plane too.
+constexpr uint32_t kClipRejectMask = ~static_cast<uint32_t>(kClipGuard);
+
 inline unsigned flag_bit(const PVertex& v, unsigned bit) {
   return v.edgeflag ? bit : 0u;
 }
@@ -70,7 +75,7 @@ private:
 
   // Segment a-b; GL 2.1 §2.14.7: the second vertex provokes.
   void line(const PVertex& a, const PVertex& b) {
-    if ((a.clipmask & b.clipmask) != 0) return;
+    if ((a.clipmask & b.clipmask & kClipRejectMask) != 0) return;
     if ((a.clipmask | b.clipmask) == 0) {
       sink_.line(a, b, b);
       return;
@@ -87,7 +92,7 @@ private:
   // path: snap, area, cull, rasterize.
   void triangle(const PVertex& a, const PVertex& b, const PVertex& c, unsigned edges,
                 const PVertex& pv) {
-    if ((a.clipmask & b.clipmask & c.clipmask) != 0) return;
+    if ((a.clipmask & b.clipmask & c.clipmask & kClipRejectMask) != 0) return;
     if ((a.clipmask | b.clipmask | c.clipmask) != 0) {
       triangle_clipped(a, b, c, edges, pv);
       return;

@@ -12,10 +12,10 @@
 // The diamonds containing an end point are then fixed up: the start one is always produced
 // (the segment exits it), the end one never. y-major segments swap the roles of x and y.
 //
-// Ties under the perturbation: crossing a centre line exactly on a pixel corner, an x-major
-// segment with positive slope goes to the lower row and otherwise to the upper row; a
-// y-major segment goes to the right column. An end point exactly on a diamond's boundary is
-// inside it when it lies on the left half (x < xc), since the +epsilon shift moves it inward.
+// Ties under the perturbation: crossing a centre line exactly on a pixel boundary, an
+// x-major segment with positive slope goes to the upper row and otherwise to the lower row;
+// a y-major segment goes to the left column. An end point exactly on a diamond's boundary is
+// inside it when it lies on the right half (x > xc), since the -epsilon shift moves it inward.
 //
 // Values: t is the projection of the fragment centre on the segment (GL 2.1 §3.4.1 eq 3.6),
 // a linear function of the window position, so z, c/w and 1/w are planes like a
@@ -35,14 +35,15 @@ namespace {
 inline int64_t floor_div(int64_t a, int64_t b) { return a >= 0 ? a / b : -((-a + b - 1) / b); }
 
 // The pixel whose diamond contains the (perturbed) point (x, y), given in 1/256 pixel, or
-// false. Only the diamond of the pixel containing the point can hold it.
+// false. Only the diamond of the pixel containing the perturbed point can hold it; moved by
+// -epsilon, a point on a pixel's left or bottom boundary lies in the pixel before.
 inline bool diamond_pixel(int64_t x, int64_t y, int64_t& px, int64_t& py) {
-  px = floor_div(x, kSubpixelOne);
-  py = floor_div(y, kSubpixelOne);
+  px = floor_div(x - 1, kSubpixelOne);
+  py = floor_div(y - 1, kSubpixelOne);
   const int64_t u = x - (px * kSubpixelOne + kSubpixelOne / 2);
   const int64_t v = y - (py * kSubpixelOne + kSubpixelOne / 2);
   const int64_t d = (u < 0 ? -u : u) + (v < 0 ? -v : v);
-  return d < kSubpixelOne / 2 || (d == kSubpixelOne / 2 && u < 0);
+  return d < kSubpixelOne / 2 || (d == kSubpixelOne / 2 && u > 0);
 }
 
 // Collects the fragments of a line into aligned 8x8 blocks for the block loop. A line visits
@@ -126,10 +127,10 @@ void raster_line(const DrawCall& dc, const PVertex& a, const PVertex& b,
   const int64_t du = x_major ? dx : dy, dv = x_major ? dy : dx;
   constexpr int64_t kHalf = kSubpixelOne / 2;
   // Pixels p along u whose centre line u_c = 256 p + 128 the perturbed segment crosses: with
-  // both ends moved by +epsilon (x) or +epsilon^2 (y), that is min(ua, ub) < u_c <= max.
+  // both ends moved by -epsilon (x) or -epsilon^2 (y), that is min(ua, ub) <= u_c < max.
   const int64_t u_lo = du > 0 ? ua : ub, u_hi = du > 0 ? ub : ua;
-  int64_t p0 = floor_div(u_lo - kHalf, kSubpixelOne) + 1;
-  int64_t p1 = floor_div(u_hi - kHalf, kSubpixelOne);
+  int64_t p0 = floor_div(u_lo - kHalf + kSubpixelOne - 1, kSubpixelOne);
+  int64_t p1 = floor_div(u_hi - 1 - kHalf, kSubpixelOne);
   const int64_t umin = x_major ? ctx.clip_x0 : ctx.clip_y0;
   const int64_t umax = x_major ? ctx.clip_x1 : ctx.clip_y1;
   if (p0 < umin) p0 = umin;
@@ -152,8 +153,9 @@ void raster_line(const DrawCall& dc, const PVertex& a, const PVertex& b,
     const int64_t step = dvn * kSubpixelOne;
     const int64_t step_q = floor_div(step, den);
     const int64_t step_r = step - step_q * den;
-    // On a corner: x-major segments with positive slope take the lower row (see top).
-    const int64_t tie_adjust = (x_major && dvn > 0) ? 1 : 0;
+    // On a pixel boundary (see top): the perturbed x-major segment passes above the corner
+    // when its slope is positive, below otherwise; a y-major one passes to its left.
+    const int64_t tie_adjust = (x_major && dvn > 0) ? 0 : 1;
     for (int64_t p = p0; p <= p1; ++p) {
       const int64_t minor = rem == 0 ? q - tie_adjust : q;
       const int64_t x = x_major ? p : minor, y = x_major ? minor : p;

@@ -287,3 +287,29 @@ TEST(Assemble, PointsAreClippedByTheirCentre) {
 
 } // namespace
 } // namespace pineda
+
+namespace pineda {
+namespace {
+
+// Regression: vertices beyond the guard band on different sides share the kClipGuard bit,
+// which must not count as "all outside one plane" (conformance scene stress_huge_triangles).
+TEST(Assemble, GuardBitAloneDoesNotRejectATriangle) {
+  const RasterState rs = make_state();
+  const float far = 1e6f;
+  const std::vector<PVertex> v = {win_vertex(rs, -far, -far, 0), win_vertex(rs, far, -far, 1),
+                                  win_vertex(rs, 50.0f, far, 2)};
+  for (const PVertex& p : v) ASSERT_NE(p.clipmask & kClipGuard, 0u);
+  const Recorder r = draw(rs, GL_TRIANGLES, v);
+  ASSERT_FALSE(r.tris.empty());
+  // What remains is the whole viewport, split into triangles.
+  double area = 0;
+  for (const auto& t : r.tris)
+    area += 0.5 * std::fabs((t.vb.win[0] - t.va.win[0]) * (t.vc.win[1] - t.va.win[1]) -
+                            (t.vc.win[0] - t.va.win[0]) * (t.vb.win[1] - t.va.win[1]));
+  EXPECT_NEAR(area, 100.0 * 100.0, 1e-3);
+  // A segment between two such vertices, through the viewport's diagonal, is drawn too.
+  EXPECT_EQ(draw(rs, GL_LINES, {v[0], win_vertex(rs, far, far, 3)}).lines.size(), 1u);
+}
+
+} // namespace
+} // namespace pineda

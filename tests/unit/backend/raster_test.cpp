@@ -148,11 +148,11 @@ std::set<std::pair<int, int>> row_span(int x0, int x1, int y) {
 }
 
 // Exact diamond-exit reference (GL 2.1 §3.4.1), independent of the rasterizer: the end
-// points are perturbed numerically by (eps, eps^2), then each open diamond is tested for
+// points are perturbed numerically by -(eps, eps^2), then each open diamond is tested for
 // intersection with the segment by clipping the segment's parameter range against the
 // diamond's four sides.
 std::set<std::pair<int, int>> ref_line(float x0, float y0, float x1, float y1, int size) {
-  const double eps = 1e-6, eps2 = 1e-12;
+  const double eps = -1e-6, eps2 = -1e-12;
   const double ax = to_fixed(x0) / 256.0 + eps, ay = to_fixed(y0) / 256.0 + eps2;
   const double bx = to_fixed(x1) / 256.0 + eps, by = to_fixed(y1) / 256.0 + eps2;
   std::set<std::pair<int, int>> s;
@@ -213,12 +213,12 @@ TEST(Line, CentreToCentreIsHalfOpen) {
 }
 
 TEST(Line, IntegerCoordinatesFollowThePerturbationRule) {
-  // A horizontal segment on the boundary between rows 2 and 3 belongs to row 3 (the
-  // segment is perturbed upwards by epsilon^2); a vertical one on a column boundary to the
-  // right column.
-  EXPECT_EQ(line_pixels(1, 3, 7, 3), row_span(1, 6, 3));
+  // A horizontal segment on the boundary between rows 2 and 3 belongs to row 2 (the segment
+  // is moved down by epsilon^2, GL 2.1 §3.4.1); a vertical one on a column boundary to the
+  // left column. llvmpipe draws them the same way.
+  EXPECT_EQ(line_pixels(1, 3, 7, 3), row_span(1, 6, 2));
   std::set<std::pair<int, int>> col;
-  for (int y = 2; y < 9; ++y) col.insert({5, y});
+  for (int y = 2; y < 9; ++y) col.insert({4, y});
   EXPECT_EQ(line_pixels(5, 2, 5, 9), col);
 }
 
@@ -226,28 +226,33 @@ TEST(Line, DiagonalsAndSlopes) {
   std::set<std::pair<int, int>> diag;
   for (int i = 0; i < 5; ++i) diag.insert({i, i});
   EXPECT_EQ(line_pixels(0.5f, 0.5f, 5.5f, 5.5f), diag);
-  // x-major, slope 1/2 starting and ending on pixel corners that lie on column centre
-  // lines: the start (moved past its centre line by the perturbation) produces nothing, the
-  // end produces a fragment; ties on corners go down for positive slopes.
+  // x-major, slope +1/2 and -1/2, starting and ending on pixel corners that lie on column
+  // centre lines: corner ties go up for the positive slope and down for the negative one.
   const auto s = line_pixels(0.5f, 1.0f, 8.5f, 5.0f);
   EXPECT_EQ(s.size(), 8u);
-  for (int x = 1; x <= 8; ++x) {
-    const double yc = 1.0 + (x + 0.5 - 0.5) * 0.5;
-    const int want = (yc == std::floor(yc)) ? static_cast<int>(yc) - 1 : static_cast<int>(yc);
-    EXPECT_EQ(s.count({x, want}), 1u) << x;
+  for (int x = 0; x < 8; ++x) {
+    const double yc = 1.0 + x * 0.5; // height at the centre line of column x
+    EXPECT_EQ(s.count({x, static_cast<int>(std::floor(yc))}), 1u) << x;
   }
-  // Negative slope through corners: the upper row.
   const auto n = line_pixels(0.5f, 5.0f, 8.5f, 1.0f);
-  EXPECT_EQ(n.count({2, 4}), 1u);
-  EXPECT_EQ(n.count({8, 1}), 1u);
   EXPECT_EQ(n.size(), 8u);
+  for (int x = 0; x < 8; ++x) {
+    const double yc = 5.0 - x * 0.5;
+    const int want = yc == std::floor(yc) ? static_cast<int>(yc) - 1 : static_cast<int>(yc);
+    EXPECT_EQ(n.count({x, want}), 1u) << x;
+  }
+  EXPECT_EQ(s, ref_line(0.5f, 1.0f, 8.5f, 5.0f, 24));
+  EXPECT_EQ(n, ref_line(0.5f, 5.0f, 8.5f, 1.0f, 24));
 }
 
 TEST(Line, StripSharesEndpointsWithoutDoubleHits) {
   TestFb t(32, 32, ColorFormat::RGBA8, 0);
   RasterState rs = counting_state();
   DrawCall dc{&rs, &t.fb};
-  const float pts[][2] = {{2.5f, 2.5f}, {20.5f, 7.5f}, {25.5f, 28.5f}, {3.2f, 20.7f},
+  // Every shared end point lies inside a diamond: the case where GL 2.1 §3.4.1 produces the
+  // shared fragment once. (An end point just outside every diamond, such as (3.2, 20.7)
+  // after the -epsilon shift, may legitimately give the same fragment to both segments.)
+  const float pts[][2] = {{2.5f, 2.5f}, {20.5f, 7.5f}, {25.5f, 28.5f}, {3.3f, 20.6f},
                           {2.5f, 2.5f}};
   int total = 0;
   for (int i = 0; i < 4; ++i) {
