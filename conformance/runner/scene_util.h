@@ -58,6 +58,6 @@ constexpr float kPi = 3.14159265358979323846f;
 constexpr const char* kLineWhy =
     "GL 2.1 §3.4.1 allows line rasterization to deviate from the diamond-exit rule by one pixel "
     "and by one fragment per segment, so segment ends may legitimately differ";
-constexpr double kLineAllowance = 2.0;
+constexpr double kLineAllowance = 0.5; // Pineda follows the same diamond-exit rule as llvmpipe
 
 } // namespace scenes
