@@ -14,6 +14,7 @@ install(FILES
     ${PINEDA_SOURCE_ROOT}/include/GL/gl.h
     ${PINEDA_SOURCE_ROOT}/include/GL/glext.h
     ${PINEDA_SOURCE_ROOT}/include/GL/osmesa.h
+    ${PINEDA_SOURCE_ROOT}/include/GL/glx.h
     ${PINEDA_GENERATED_HEADERS}
   DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/GL)
 

@@ -11,6 +11,9 @@ PACKAGES=(
   libbenchmark-dev
   libosmesa6-dev         # Mesa's OSMesa: the conformance oracle (never linked into Pineda)
   libpng-dev zlib1g-dev  # conformance images
+  libx11-dev libxext-dev # GLX over Xlib, presenting with MIT-SHM (XShm)
+  xvfb mesa-utils        # GLX tests: a private X server; unmodified glxinfo
+  libglfw3-dev           # GLX tests: an unmodified GLFW program
 )
 
 missing=()

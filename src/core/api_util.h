@@ -29,8 +29,14 @@ inline Context* outside_begin_end(const char* func) {
   Context* ctx = outside_begin_end(func);                                                          \
   if (ctx == nullptr) return
 
-// Clamp to [0,1] (GL 2.1 §2.14: clampf parameters).
-inline float clampf01(float v) { return v < 0.0f ? 0.0f : (v > 1.0f ? 1.0f : v); }
-inline double clampd01(double v) { return v < 0.0 ? 0.0 : (v > 1.0 ? 1.0 : v); }
+// Clamp to [0,1] (GL 2.1 §2.14: clampf parameters). NaN becomes 0: GL 2.1 §2.1.1 leaves the
+// result open but forbids interruption, and a NaN clear depth or depth range would reach
+// float-to-integer conversions whose behaviour is undefined.
+inline float clampf01(float v) {
+  return v > 0.0f ? (v < 1.0f ? v : 1.0f) : 0.0f;
+}
+inline double clampd01(double v) {
+  return v > 0.0 ? (v < 1.0 ? v : 1.0) : 0.0;
+}
 
 } // namespace pineda

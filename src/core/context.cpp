@@ -21,14 +21,20 @@ bool debug_enabled() {
 }
 } // namespace
 
-Context::Context() {
-  for (auto& t : arrays.texcoord) t = ClientArray{false, 4, GL_FLOAT, 0, nullptr, 0};
+Context::Context() : Context(std::make_shared<SharedObjects>()) {}
+
+Context::Context(std::shared_ptr<SharedObjects> objects)
+    : shared(std::move(objects)), buffers(shared->buffers) {
+  for (auto& t : arrays.texcoord)
+    t = ClientArray{false, 4, GL_FLOAT, 0, nullptr, 0};
   imm.reserve(1024);
 }
 
 Context::~Context() = default;
 
-Context* current_context() { return t_current; }
+Context* current_context() {
+  return t_current;
+}
 
 void set_current_context(Context* ctx) {
   t_current = ctx;

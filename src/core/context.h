@@ -16,6 +16,7 @@
 #include "framebuffer/framebuffer.h"
 #include "framebuffer/pixel_store.h"
 #include "raster/raster.h"
+#include "state/lighting_state.h"
 
 namespace pineda {
 
@@ -27,6 +28,7 @@ enum DirtyBit : uint32_t {
   kDirtyPolygon = 1u << 3,     // culling, front face, polygon mode, shade model
   kDirtyFragment = 1u << 4,    // depth, blend, colour mask
   kDirtyFramebuffer = 1u << 5, // the drawable changed
+  kDirtyLighting = 1u << 16,   // lighting state, or normalize / rescale-normal enables
   kDirtyAll = 0xffffffffu,
 };
 
@@ -55,6 +57,7 @@ struct VertexArrays {
   ClientArray normal{false, 3, GL_FLOAT, 0, nullptr, 0};
   ClientArray texcoord[kMaxTexUnits];
   ClientArray edgeflag{false, 1, GL_BOOL, 0, nullptr, 0};
+  ClientArray secondary{false, 3, GL_FLOAT, 0, nullptr, 0}; // SECONDARY_COLOR_ARRAY
 };
 
 // A buffer object (GL 2.1 §2.9).
@@ -64,6 +67,13 @@ struct BufferObject {
   GLenum access = GL_READ_WRITE;
   bool mapped = false;
   bool ever_bound = false;
+};
+
+// The objects a share group of contexts has in common (GLX 1.4 §3.3.7 share lists): today the
+// buffer objects. Contexts of one group on different threads must not create or delete
+// objects concurrently (the container itself is not locked).
+struct SharedObjects {
+  std::unordered_map<GLuint, std::unique_ptr<BufferObject>> buffers;
 };
 
 // glPushClientAttrib saves these (GL 2.1 §6.1.14, CLIENT_PIXEL_STORE_BIT and
@@ -84,7 +94,16 @@ struct InputVertex {
   float color[4];
   float normal[3];
   float tex[4]; // texture unit 0; more units come with multitexture
+  float color2[3]; // secondary colour (GL 1.4, §2.7)
   uint32_t edge;
+};
+
+// The colour buffers of GL 2.1 table 4.4 (no auxiliary buffers exist: GL_AUX_BUFFERS is 0).
+enum ColorBufferBit : uint32_t {
+  kColorBufferFrontLeft = 1u << 0,
+  kColorBufferFrontRight = 1u << 1,
+  kColorBufferBackLeft = 1u << 2,
+  kColorBufferBackRight = 1u << 3,
 };
 
 constexpr GLenum kOutsideBeginEnd = 0xffffffffu;
@@ -97,6 +116,8 @@ constexpr int kMaxViewportDim = 16384;
 
 struct Context {
   Context();
+  // A context in the share group that owns `objects`.
+  explicit Context(std::shared_ptr<SharedObjects> objects);
   ~Context();
   Context(const Context&) = delete;
   Context& operator=(const Context&) = delete;
@@ -104,6 +125,12 @@ struct Context {
   // ---- window system (set by osmesa.cpp / glx) ----
   Framebuffer fb;
   bool ever_current = false;
+  // The colour buffers the context has (GL 2.1 table 4.4), kColorBuffer* bits. Pineda draws
+  // into fb.color, which is the front left buffer unless a window-system layer says otherwise.
+  uint32_t color_buffers = kColorBufferFrontLeft;
+  // Called by glFlush and glFinish when set (GLX: a single-buffered window or a pixmap shows
+  // what was rendered once the commands are flushed, GL 2.1 §5.5).
+  void (*present_front)(Context*) = nullptr;
 
   // ---- errors (GL 2.1 §2.5): the first error is kept until glGetError ----
   GLenum error = GL_NO_ERROR;
@@ -114,6 +141,7 @@ struct Context {
 
   // ---- current values (GL 2.1 §2.7, Table 6.5) ----
   float cur_color[4] = {1, 1, 1, 1};
+  float cur_color2[4] = {0, 0, 0, 1}; // CURRENT_SECONDARY_COLOR
   float cur_normal[3] = {0, 0, 1};
   float cur_tex[kMaxTexUnits][4] = {{0, 0, 0, 1}, {0, 0, 0, 1}, {0, 0, 0, 1}, {0, 0, 0, 1}};
   bool cur_edge = true;
@@ -134,6 +162,9 @@ struct Context {
   bool clip_enabled[kMaxClipPlanes] = {};
   bool normalize = false;
   bool rescale_normal = false;
+
+  // ---- lighting (GL 2.1 §2.14.1-§2.14.4), src/state/lighting.cpp ----
+  LightingState lighting;
 
   // ---- rasterization (Table 6.11, 6.12) ----
   bool cull_enabled = false;
@@ -159,6 +190,23 @@ struct Context {
   double clear_depth = 1.0;
   GLint clear_stencil = 0;
   GLuint stencil_writemask = 0xffffffffu;
+  bool scissor_test = false;
+  GLint scissor_box[4] = {0, 0, 0, 0}; // x, y, width, height; the window size once current
+  bool alpha_test = false;
+  GLenum alpha_func = GL_ALWAYS;
+  float alpha_ref = 0.0f;
+  bool stencil_test = false;
+  GLenum stencil_func = GL_ALWAYS;
+  GLint stencil_ref = 0;
+  GLuint stencil_value_mask = 0xffffffffu;
+  GLenum stencil_fail = GL_KEEP, stencil_depth_fail = GL_KEEP, stencil_depth_pass = GL_KEEP;
+  bool color_logic_op = false;
+  bool index_logic_op = false; // state only: Pineda has no colour index mode (GL 2.1 §4.1.10)
+  GLenum logic_op = GL_COPY;
+  // GL 2.1 §4.2.1, §4.3.2: FRONT when the context has no back buffer, BACK otherwise; a
+  // window-system layer that gives the context a back buffer sets both to GL_BACK.
+  GLenum draw_buffer = GL_FRONT;
+  GLenum read_buffer = GL_FRONT;
 
   // ---- hints (Table 6.38) ----
   GLenum hint_perspective = GL_DONT_CARE;
@@ -175,7 +223,8 @@ struct Context {
   GLuint client_active_texture = 0;
   GLuint array_buffer = 0;
   GLuint element_array_buffer = 0;
-  std::unordered_map<GLuint, std::unique_ptr<BufferObject>> buffers;
+  std::shared_ptr<SharedObjects> shared;
+  std::unordered_map<GLuint, std::unique_ptr<BufferObject>>& buffers; // shared->buffers
   std::vector<ClientAttribFrame> client_attrib_stack;
 
   // ---- derived state (validate.cpp) ----

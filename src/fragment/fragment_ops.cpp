@@ -6,6 +6,10 @@
 // (perspective-correct or constant), blending (§4.1.8) and the masked store (§4.2.2) for the
 // fragments that survived. Every choice that depends on state is a template parameter; what
 // is left at run time are values (blend factors, generic depth function, colour keep mask).
+// The scissor test (§4.1.2) costs nothing here: it narrows the clip rectangle the
+// rasterizers already respect. The alpha test (§4.1.4), the stencil test (§4.1.5) and the
+// logical operation (§4.1.10) live in a second set of instances (template parameter X),
+// chosen only when one of them is on, with a per-row branch for each.
 #include "fragment/fragment_ops.h"
 
 #include "fragment/simd.h"
@@ -208,12 +212,90 @@ unsigned depth_row(const FragCtx& ctx, const FragInputs& in, int bx, int y, int 
   return bits;
 }
 
+// Alpha test of one row (GL 2.1 §4.1.4): the fragment alpha as the 8-bit value it would be
+// stored as, against the reference converted the same way, which is what llvmpipe compares
+// (a float comparison gives different results for alphas within half a step of the
+// reference). Returns the fragments of `m` that pass.
+template <ColorFormat P> unsigned alpha_row(const FragCtx& ctx, const Row& s, unsigned m) {
+  const i32x4 f = {}, ref = f + static_cast<int32_t>(ctx.alpha_ref);
+  const i32x4 lt = f - static_cast<int32_t>(ctx.alpha_func & 1u);
+  const i32x4 eq = f - static_cast<int32_t>((ctx.alpha_func >> 1) & 1u);
+  const i32x4 gt = f - static_cast<int32_t>((ctx.alpha_func >> 2) & 1u);
+  i32x4 pass[2];
+  for (int h = 0; h < 2; ++h) {
+    const i32x4 a = reinterpret_cast<i32x4>((s.v[h] >> byte_shift(Layout<P>::a)) & 0xffu);
+    pass[h] = ((a < ref) & lt) | ((a == ref) & eq) | ((a > ref) & gt);
+  }
+  return m & lane_bits(pass[0], pass[1]);
+}
+
+// Stencil test of one row (GL 2.1 §4.1.5), the depth test of the survivors (§4.1.6), and the
+// stencil update chosen by the outcome of both: sfail where the stencil test failed, dpfail
+// where the depth test failed, dppass where both passed (or the depth test is off, which
+// counts as passing). Returns the fragments that passed both tests.
+template <DepthPath D>
+unsigned stencil_depth_row(const FragCtx& ctx, const FragInputs& in, int bx, int y, int di,
+                           int dj, unsigned m) {
+  uint8_t* const st = ctx.stencil + static_cast<ptrdiff_t>(y) * ctx.fb_width + bx;
+  // Whole rows inside the buffer are loaded and stored as eight bytes; the last block of a
+  // row whose width is not a multiple of 8 touches only its fragments.
+  const bool whole = bx + N <= ctx.fb_width;
+  uint8_t old[N] = {};
+  if (whole) {
+    std::memcpy(old, st, N);
+  } else {
+    for (int i = 0; i < N; ++i)
+      if ((m >> i) & 1u) old[i] = st[i];
+  }
+  const i32x4 v[2] = {{old[0], old[1], old[2], old[3]}, {old[4], old[5], old[6], old[7]}};
+  const i32x4 zero = {}, vm = zero + ctx.stencil_value_mask, ref = zero + ctx.stencil_ref;
+  const i32x4 masked_ref = ref & vm;
+  const i32x4 lt = zero - static_cast<int32_t>(ctx.stencil_func & 1u);
+  const i32x4 eq = zero - static_cast<int32_t>((ctx.stencil_func >> 1) & 1u);
+  const i32x4 gt = zero - static_cast<int32_t>((ctx.stencil_func >> 2) & 1u);
+  i32x4 pass[2];
+  for (int h = 0; h < 2; ++h) {
+    const i32x4 sv = v[h] & vm;
+    pass[h] = ((masked_ref < sv) & lt) | ((masked_ref == sv) & eq) | ((masked_ref > sv) & gt);
+  }
+  const unsigned spass = m & lane_bits(pass[0], pass[1]);
+  unsigned zpass = spass;
+  if constexpr (D != DepthPath::Off)
+    zpass = spass != 0 ? depth_row<D>(ctx, in, bx, y, di, dj, spass) : 0;
+  if (ctx.stencil_write_mask == 0) return zpass;
+  const i32x4 wm = zero + ctx.stencil_write_mask;
+  i32x4 sfail[2], dpfail[2], dppass[2];
+  bits_to_lanes(m & ~spass, sfail[0], sfail[1]);
+  bits_to_lanes(spass & ~zpass, dpfail[0], dpfail[1]);
+  bits_to_lanes(zpass, dppass[0], dppass[1]);
+  uint8_t out[N];
+  for (int h = 0; h < 2; ++h) {
+    const i32x4 keep = ~(sfail[h] | dpfail[h] | dppass[h]);
+    const i32x4 nv = (stencil_op_lanes(ctx.stencil_ops[0], v[h], ref) & sfail[h]) |
+                     (stencil_op_lanes(ctx.stencil_ops[1], v[h], ref) & dpfail[h]) |
+                     (stencil_op_lanes(ctx.stencil_ops[2], v[h], ref) & dppass[h]) |
+                     (v[h] & keep);
+    const i32x4 w = (v[h] & ~wm) | (nv & wm);
+    for (int k = 0; k < 4; ++k) out[4 * h + k] = static_cast<uint8_t>(w[k]);
+  }
+  if (whole) {
+    std::memcpy(st, out, N);
+  } else {
+    for (int i = 0; i < N; ++i)
+      if ((m >> i) & 1u) st[i] = out[i];
+  }
+  return zpass;
+}
+
 // Blend, colour mask and store of one row of a 4-byte format (GL 2.1 §4.1.8, §4.2.2). Full
 // rows load and store the eight pixels whole; others touch only their fragments.
-template <ColorFormat F, ColorPath C, BlendPath B>
+template <ColorFormat F, ColorPath C, BlendPath B, bool X>
 void write_row4(const FragCtx& ctx, uint8_t* row, unsigned m, bool in_buffer, Row& s) {
   constexpr bool kReadsDst = B != BlendPath::Off || C == ColorPath::Partial;
-  if (m == 0xffu && !kReadsDst) {
+  // GL 2.1 §4.1.10: the logical operation takes blending's place (the key has blend off).
+  const bool logic = X && ctx.key.logic_op;
+  const bool reads_dst = kReadsDst || logic;
+  if (m == 0xffu && !reads_dst) {
     std::memcpy(row, &s, sizeof(s));
     return;
   }
@@ -225,6 +307,8 @@ void write_row4(const FragCtx& ctx, uint8_t* row, unsigned m, bool in_buffer, Ro
       blend_over_row<F>(s, dst);
     else if constexpr (B == BlendPath::Generic)
       blend_generic_row<F>(ctx, m, s, dst);
+    if (logic)
+      for (int h = 0; h < 2; ++h) s.v[h] = apply_logic(ctx.logic, s.v[h], dst.v[h]);
     if constexpr (C == ColorPath::Partial) {
       const u32x4 keep = u32x4{} + ctx.color_keep;
       for (int h = 0; h < 2; ++h) s.v[h] = (dst.v[h] & keep) | (s.v[h] & ~keep);
@@ -238,7 +322,7 @@ void write_row4(const FragCtx& ctx, uint8_t* row, unsigned m, bool in_buffer, Ro
   // The last block of a row whose width is not a multiple of 8: fragment by fragment.
   Row dst;
   alignas(16) uint32_t tmp[N] = {};
-  if constexpr (kReadsDst) {
+  if (reads_dst) {
     for (int i = 0; i < N; ++i)
       if ((m >> i) & 1u) std::memcpy(&tmp[i], row + 4 * i, 4);
   }
@@ -247,6 +331,8 @@ void write_row4(const FragCtx& ctx, uint8_t* row, unsigned m, bool in_buffer, Ro
     blend_over_row<F>(s, dst);
   else if constexpr (B == BlendPath::Generic)
     blend_generic_row<F>(ctx, m, s, dst);
+  if (logic)
+    for (int h = 0; h < 2; ++h) s.v[h] = apply_logic(ctx.logic, s.v[h], dst.v[h]);
   if constexpr (C == ColorPath::Partial) {
     const u32x4 keep = u32x4{} + ctx.color_keep;
     for (int h = 0; h < 2; ++h) s.v[h] = (dst.v[h] & keep) | (s.v[h] & ~keep);
@@ -257,7 +343,7 @@ void write_row4(const FragCtx& ctx, uint8_t* row, unsigned m, bool in_buffer, Ro
 }
 
 // The same for 3-byte RGB8 pixels, one fragment at a time; `s` is packed as RGBA8.
-template <ColorPath C, BlendPath B>
+template <ColorPath C, BlendPath B, bool X>
 void write_row3(const FragCtx& ctx, uint8_t* row, unsigned m, const Row& s) {
   alignas(16) uint32_t sp[N];
   std::memcpy(sp, &s, sizeof(sp));
@@ -278,13 +364,22 @@ void write_row3(const FragCtx& ctx, uint8_t* row, unsigned m, const Row& s) {
         std::memcpy(c, o, 4);
       }
     }
+    if (X && ctx.key.logic_op) {
+      const uint32_t src = c[0] | (c[1] << 8) | (c[2] << 16);
+      const uint32_t dst = p[0] | (p[1] << 8) | (p[2] << 16);
+      const uint32_t out = apply_logic(ctx.logic, src, dst);
+      for (int k = 0; k < 3; ++k) c[k] = static_cast<uint8_t>(out >> (8 * k));
+    }
     for (int k = 0; k < 3; ++k)
       p[k] = C == ColorPath::Partial ? static_cast<uint8_t>((p[k] & keep[k]) | (c[k] & ~keep[k]))
                                      : c[k];
   }
 }
 
-template <DepthPath D, ColorFormat F, ColorPath C, BlendPath B, ShadePath S>
+// X selects the extended instances: alpha test (§4.1.4) before the stencil and depth tests
+// (§4.1.5, §4.1.6), and the logical operation (§4.1.10) in place of blending, each behind a
+// per-row branch on the key. Without X none of that code exists in the instance.
+template <DepthPath D, ColorFormat F, ColorPath C, BlendPath B, ShadePath S, bool X>
 void block_loop(const FragCtx& ctx, const FragInputs& in, int bx, int by, uint64_t mask) {
   using L = Layout<F>;
   // Pixels travel packed in the format's byte order; RGB8 rows are packed as RGBA8.
@@ -301,22 +396,42 @@ void block_loop(const FragCtx& ctx, const FragInputs& in, int bx, int by, uint64
     mask &= ~(0xffull << (8 * j));
     const int y = by + j;
     const int di = bx - in.ox, dj = y - in.oy;
-    if constexpr (D != DepthPath::Off) {
+    Row s;
+    bool shaded = false;
+    if constexpr (X) {
+      if (ctx.key.alpha_test) {
+        if constexpr (S == ShadePath::Const)
+          s = const_row;
+        else
+          shade_row<P>(in, di, dj, s);
+        shaded = true;
+        m = alpha_row<P>(ctx, s, m);
+        if (m == 0) continue;
+      }
+      if (ctx.key.stencil_test) {
+        m = stencil_depth_row<D>(ctx, in, bx, y, di, dj, m);
+        if (m == 0) continue;
+      } else if constexpr (D != DepthPath::Off) {
+        m = depth_row<D>(ctx, in, bx, y, di, dj, m);
+        if (m == 0) continue;
+      }
+    } else if constexpr (D != DepthPath::Off) {
       m = depth_row<D>(ctx, in, bx, y, di, dj, m);
       if (m == 0) continue;
     }
     if constexpr (C != ColorPath::None) {
       uint8_t* const row = ctx.color + static_cast<ptrdiff_t>(y) * ctx.color_stride +
                            static_cast<ptrdiff_t>(bx) * L::bpp;
-      Row s;
-      if constexpr (S == ShadePath::Const)
-        s = const_row;
-      else
-        shade_row<P>(in, di, dj, s);
+      if (!shaded) {
+        if constexpr (S == ShadePath::Const)
+          s = const_row;
+        else
+          shade_row<P>(in, di, dj, s);
+      }
       if constexpr (L::bpp == 4)
-        write_row4<F, C, B>(ctx, row, m, bx + N <= ctx.fb_width, s);
+        write_row4<F, C, B, X>(ctx, row, m, bx + N <= ctx.fb_width, s);
       else
-        write_row3<C, B>(ctx, row, m, s);
+        write_row3<C, B, X>(ctx, row, m, s);
     }
   }
 }
@@ -334,7 +449,7 @@ constexpr int color_index(DepthPath d, ColorFormat f, ColorPath c, BlendPath b, 
              kShadePathCount + static_cast<int>(s);
 }
 
-template <int I> constexpr BlockFn color_entry() {
+template <int I, bool X> constexpr BlockFn color_entry() {
   constexpr auto s = static_cast<ShadePath>(I % kShadePathCount);
   constexpr auto b = static_cast<BlendPath>((I / kShadePathCount) % kBlendPathCount);
   constexpr int rest = I / (kShadePathCount * kBlendPathCount);
@@ -342,27 +457,45 @@ template <int I> constexpr BlockFn color_entry() {
   constexpr auto f = static_cast<ColorFormat>((rest / 2) % kColorFormatCount);
   constexpr auto d = static_cast<DepthPath>(rest / (2 * kColorFormatCount));
   static_assert(color_index(d, f, c, b, s) == I);
-  return &block_loop<d, f, c, b, s>;
+  // The extended instances run every depth function through the generic path, which keeps
+  // their number down: all depth rows but Off name the one Generic instance.
+  constexpr DepthPath dx = (X && d != DepthPath::Off) ? DepthPath::Generic : d;
+  return &block_loop<dx, f, c, b, s, X>;
 }
 
-template <size_t... I>
+template <bool X, size_t... I>
 constexpr std::array<BlockFn, sizeof...(I)> make_color_table(std::index_sequence<I...>) {
-  return {color_entry<static_cast<int>(I)>()...};
+  return {color_entry<static_cast<int>(I), X>()...};
 }
 
 constexpr std::array<BlockFn, kColorInstances> kColorTable =
-    make_color_table(std::make_index_sequence<kColorInstances>{});
+    make_color_table<false>(std::make_index_sequence<kColorInstances>{});
+
+constexpr std::array<BlockFn, kColorInstances> kExtColorTable =
+    make_color_table<true>(std::make_index_sequence<kColorInstances>{});
+
+// Depth-only instances of the extended loop: the shade path matters for the alpha test.
+constexpr std::array<BlockFn, 2 * kShadePathCount> kExtDepthOnlyTable = {
+    &block_loop<DepthPath::Off, ColorFormat::RGBA8, ColorPath::None, BlendPath::Off,
+                ShadePath::Const, true>,
+    &block_loop<DepthPath::Off, ColorFormat::RGBA8, ColorPath::None, BlendPath::Off,
+                ShadePath::Smooth, true>,
+    &block_loop<DepthPath::Generic, ColorFormat::RGBA8, ColorPath::None, BlendPath::Off,
+                ShadePath::Const, true>,
+    &block_loop<DepthPath::Generic, ColorFormat::RGBA8, ColorPath::None, BlendPath::Off,
+                ShadePath::Smooth, true>,
+};
 
 // Depth-only instances (colour mask all false or no colour buffer); the other template
 // parameters do not matter there.
 constexpr std::array<BlockFn, kDepthPathCount> kDepthOnlyTable = {
     &noop_block,
     &block_loop<DepthPath::LessWrite, ColorFormat::RGBA8, ColorPath::None, BlendPath::Off,
-                ShadePath::Const>,
+                ShadePath::Const, false>,
     &block_loop<DepthPath::LequalWrite, ColorFormat::RGBA8, ColorPath::None, BlendPath::Off,
-                ShadePath::Const>,
+                ShadePath::Const, false>,
     &block_loop<DepthPath::Generic, ColorFormat::RGBA8, ColorPath::None, BlendPath::Off,
-                ShadePath::Const>,
+                ShadePath::Const, false>,
 };
 
 // Memory-order mask of the bytes a partial colour mask keeps (GL 2.1 §4.2.2).
@@ -378,10 +511,37 @@ template <ColorFormat F> uint32_t keep_mask(uint8_t written) {
   return v;
 }
 
+// Values of the alpha test, stencil test and logical operation (only when the key has one).
+void prepare_ext(const RasterState& rs, const Framebuffer& fb, FragCtx& ctx) {
+  const StateKey& k = ctx.key;
+  if (k.alpha_test) {
+    ctx.alpha_func = depth_func_bits(rs.alpha_func);
+    ctx.alpha_ref = color_to_unorm8(rs.alpha_ref);
+  }
+  if (k.stencil_test) {
+    ctx.stencil = fb.stencil;
+    ctx.stencil_func = depth_func_bits(rs.stencil_func);
+    // GL 2.1 §4.1.5: the reference is clamped to [0, 2^s - 1]; masks use the low s bits.
+    ctx.stencil_ref = static_cast<uint8_t>(std::clamp(rs.stencil_ref, 0, 255));
+    ctx.stencil_value_mask = static_cast<uint8_t>(rs.stencil_value_mask & 0xffu);
+    ctx.stencil_write_mask = static_cast<uint8_t>(rs.stencil_writemask & 0xffu);
+    ctx.stencil_ops[0] = stencil_op_from_gl(rs.stencil_fail);
+    ctx.stencil_ops[1] = stencil_op_from_gl(rs.stencil_depth_fail);
+    ctx.stencil_ops[2] = stencil_op_from_gl(rs.stencil_depth_pass);
+  }
+  if (k.logic_op) ctx.logic = logic_masks(rs.logic_op_mode);
+}
+
 } // namespace
 
 BlockFn select_block_fn(const StateKey& key, ShadePath shade) {
   const ColorPath c = key.color_path();
+  if (key.ext()) {
+    const DepthPath d = key.depth_test ? DepthPath::Generic : DepthPath::Off;
+    if (c == ColorPath::None)
+      return kExtDepthOnlyTable[(d == DepthPath::Generic ? 2 : 0) + static_cast<int>(shade)];
+    return kExtColorTable[color_index(d, key.format, c, key.blend_path(), shade)];
+  }
   if (c == ColorPath::None) return kDepthOnlyTable[static_cast<int>(key.depth_path())];
   return kColorTable[color_index(key.depth_path(), key.format, c, key.blend_path(), shade)];
 }
@@ -403,14 +563,26 @@ void prepare_fragments(const RasterState& rs, const Framebuffer& fb, FragCtx& ct
   case ColorFormat::RGB8: ctx.color_keep = keep_mask<ColorFormat::RGB8>(k.color_mask); break;
   }
   if (k.blend) ctx.blend = make_blend_params(rs);
+  if (k.ext()) prepare_ext(rs, fb, ctx);
   ctx.fb_width = fb.width;
   ctx.clip_x0 = 0;
   ctx.clip_y0 = 0;
   ctx.clip_x1 = fb.width - 1;
   ctx.clip_y1 = fb.height - 1;
-  ctx.needs_color = k.color_path() != ColorPath::None;
+  if (rs.scissor_test) {
+    // GL 2.1 §4.1.2: x in [left, left + width), y in [bottom, bottom + height); 64-bit ends
+    // so that left + width cannot overflow.
+    const int64_t x1 = int64_t{rs.scissor[0]} + rs.scissor[2] - 1;
+    const int64_t y1 = int64_t{rs.scissor[1]} + rs.scissor[3] - 1;
+    ctx.clip_x0 = std::max(ctx.clip_x0, rs.scissor[0]);
+    ctx.clip_y0 = std::max(ctx.clip_y0, rs.scissor[1]);
+    ctx.clip_x1 = static_cast<int>(std::min<int64_t>(ctx.clip_x1, x1));
+    ctx.clip_y1 = static_cast<int>(std::min<int64_t>(ctx.clip_y1, y1));
+  }
+  ctx.needs_color = k.color_path() != ColorPath::None || k.alpha_test;
   ctx.needs_depth = k.depth_test;
-  ctx.noop = (!ctx.needs_color && !ctx.needs_depth) || fb.width <= 0 || fb.height <= 0;
+  ctx.noop = (!ctx.needs_color && !ctx.needs_depth && !k.stencil_test) ||
+             ctx.clip_x0 > ctx.clip_x1 || ctx.clip_y0 > ctx.clip_y1;
   for (int s = 0; s < kShadePathCount; ++s)
     ctx.fn[s] = select_block_fn(k, static_cast<ShadePath>(s));
 }

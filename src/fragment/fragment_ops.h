@@ -11,6 +11,7 @@
 #include <cstdint>
 
 #include "fragment/blend.h"
+#include "fragment/per_fragment.h"
 #include "fragment/state_key.h"
 #include "framebuffer/framebuffer.h"
 #include "raster/raster.h"
@@ -58,14 +59,24 @@ struct FragCtx {
   bool depth_write = false;  // for the generic path
   uint32_t color_keep = 0;   // partial colour mask: bits of the stored pixel to keep
   BlendParams blend;
-  // Fragments outside this rectangle (inclusive) are never produced: the framebuffer today,
-  // the framebuffer intersected with the scissor box later.
+  // Values of the operations StateKey::ext() covers; read only by the extended instances.
+  uint8_t alpha_func = 0;      // depth_func_bits encoding (GL 2.1 §4.1.4)
+  uint8_t alpha_ref = 0;       // the reference as 8-bit fixed point (§2.14.9)
+  uint8_t* stencil = nullptr;  // row 0 at the bottom, stride fb_width
+  uint8_t stencil_func = 0;    // depth_func_bits encoding (§4.1.5)
+  uint8_t stencil_ref = 0;     // clamped to [0, 255]
+  uint8_t stencil_value_mask = 0xff;
+  uint8_t stencil_write_mask = 0xff;
+  StencilOp stencil_ops[3] = {}; // stencil fails, depth fails, depth passes
+  LogicMasks logic;
+  // Fragments outside this rectangle (inclusive) are never produced: the framebuffer,
+  // intersected with the scissor box when the scissor test is on (GL 2.1 §4.1.2).
   int clip_x0 = 0, clip_y0 = 0, clip_x1 = -1, clip_y1 = -1;
   // Rows of a block that lie entirely inside the buffer (bx + 8 <= fb_width) are loaded and
   // stored whole, with the coverage applied as a lane select.
   int fb_width = 0;
-  bool noop = true;          // nothing can change: no colour write and no depth test
-  bool needs_color = false;  // the colour path reads the primitive's colour
+  bool noop = true;          // nothing can change: no colour, depth or stencil update
+  bool needs_color = false;  // the colour path or the alpha test reads the primitive's colour
   bool needs_depth = false;  // the depth path reads the primitive's z
   BlockFn fn[kShadePathCount] = {nullptr, nullptr}; // indexed by ShadePath
 };

@@ -21,7 +21,19 @@ StateKey make_state_key(const RasterState& rs, const Framebuffer& fb) {
       if (rs.color_write[i]) k.color_mask |= static_cast<uint8_t>(1u << i);
     k.color_mask &= k.all_channels();
   }
-  if (k.color_mask != 0 && rs.blend && !blend_is_store(rs)) {
+  k.alpha_test = rs.alpha_test && rs.alpha_func != GL_ALWAYS;
+  // GL 2.1 §4.1.5: without a stencil buffer the test always passes and nothing is written.
+  // A test that always passes and never writes is the same as no test.
+  const bool stencil_writes =
+      (rs.stencil_writemask & 0xffu) != 0 &&
+      (rs.stencil_fail != GL_KEEP || rs.stencil_depth_fail != GL_KEEP ||
+       rs.stencil_depth_pass != GL_KEEP);
+  k.stencil_test = rs.stencil_test && fb.stencil != nullptr && fb.stencil_bits > 0 &&
+                   (rs.stencil_func != GL_ALWAYS || stencil_writes);
+  if (rs.logic_op) {
+    // GL 2.1 §4.1.10: the logical operation replaces blending; COPY stores the source.
+    k.logic_op = k.color_mask != 0 && rs.logic_op_mode != GL_COPY;
+  } else if (k.color_mask != 0 && rs.blend && !blend_is_store(rs)) {
     k.blend = true;
     k.blend_over = rs.blend_src_rgb == GL_SRC_ALPHA &&
                    rs.blend_dst_rgb == GL_ONE_MINUS_SRC_ALPHA &&

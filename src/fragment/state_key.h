@@ -52,6 +52,13 @@ struct StateKey {
   bool has_alpha = true; // the format stores alpha; otherwise destination alpha reads as 1
   bool blend = false;    // blending on and not equivalent to a plain store
   bool blend_over = false; // the blend is SRC_ALPHA, ONE_MINUS_SRC_ALPHA, FUNC_ADD for both
+  // The rarer operations each take a per-row branch inside one extra set of instances, so
+  // that with all three off the block loops are exactly the ones without them.
+  bool alpha_test = false;   // GL 2.1 §4.1.4, on and not ALWAYS
+  bool stencil_test = false; // §4.1.5, on, a stencil buffer present, and able to change anything
+  bool logic_op = false;     // §4.1.10 on colour, and not COPY (which is a plain store)
+
+  bool ext() const { return alpha_test || stencil_test || logic_op; }
 
   DepthPath depth_path() const;
   ColorPath color_path() const;

@@ -1,13 +1,14 @@
 // glClear (GL 2.1 §4.2.3) on the framebuffer's colour, depth and stencil surfaces.
 //
-// Every clear goes through one rectangle (today the whole framebuffer; the scissor box will
-// narrow it). Unmasked clears are plain fills: memset when all bytes of the value are equal,
+// Every clear goes through one rectangle: the whole framebuffer, narrowed by the scissor box
+// when the scissor test is on. Unmasked clears are plain fills: memset when all bytes of the value are equal,
 // wide pattern stores otherwise, and one fill over the whole surface when its rows are
 // contiguous. Masked clears read, merge and write (GL 2.1 §4.2.2: the colour, depth and
 // stencil write masks apply to clears).
 #include <GL/gl.h>
 
 #include <algorithm>
+#include <cstdint>
 #include <cstring>
 
 #include "raster/raster.h"
@@ -150,7 +151,18 @@ void clear_rect(Framebuffer& fb, const ClearState& cs, GLbitfield mask, const Re
 } // namespace
 
 void clear_buffers(Framebuffer& fb, const ClearState& cs, GLbitfield mask) {
-  clear_rect(fb, cs, mask, Rect{0, 0, fb.width, fb.height});
+  Rect r{0, 0, fb.width, fb.height};
+  if (cs.scissor_test) {
+    // GL 2.1 §4.2.3: clears pass the scissor test (§4.1.2) like fragments. 64-bit ends, so
+    // that x + width cannot overflow.
+    const int64_t x1 = int64_t{cs.scissor[0]} + cs.scissor[2];
+    const int64_t y1 = int64_t{cs.scissor[1]} + cs.scissor[3];
+    r.x0 = std::max(r.x0, cs.scissor[0]);
+    r.y0 = std::max(r.y0, cs.scissor[1]);
+    r.x1 = static_cast<int>(std::min<int64_t>(r.x1, x1));
+    r.y1 = static_cast<int>(std::min<int64_t>(r.y1, y1));
+  }
+  clear_rect(fb, cs, mask, r);
 }
 
 } // namespace pineda

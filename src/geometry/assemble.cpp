@@ -10,6 +10,7 @@
 #include <cstddef>
 #include <cstdint>
 
+#include "fragment/fragment_ops.h"
 #include "geometry/clip.h"
 #include "geometry/cull.h"
 #include "raster/raster.h"
@@ -260,8 +261,13 @@ void assemble(Sink& sink, const DrawCall& dc, GLenum mode, const PVertex* verts,
 
 void draw_primitives(const DrawCall& dc, GLenum mode, const PVertex* verts, const uint32_t* indices,
                      size_t count) {
-  RasterSink sink{dc};
-  assemble(sink, dc, mode, verts, indices, count);
+  // The fragment stage is set up once for the whole draw, not once per primitive.
+  FragCtx frag;
+  prepare_fragments(*dc.state, *dc.fb, frag);
+  DrawCall prepared = dc;
+  prepared.frag = &frag;
+  RasterSink sink{prepared};
+  assemble(sink, prepared, mode, verts, indices, count);
 }
 
 void draw_primitives_to(PrimitiveSink& sink, const DrawCall& dc, GLenum mode, const PVertex* verts,

@@ -20,14 +20,18 @@ constexpr int kPlaneOrder[kNumClipPlanes] = {4, 5, 0, 1, 2, 3, 6, 7, 8, 9, 10, 1
 constexpr float kWindowLimit = 2.0f * kGuardBand;
 
 // dst = p + t (q - p) for position and the live attributes, interpolating from whichever end
-// is nearer so the step stays small (GL 2.1 §2.12: P = t P1 + (1 - t) P2).
-void lerp_vertex(const ClipSetup& cs, const PVertex& p, const PVertex& q, double t, PVertex& dst) {
+// is nearer so the step stays small (GL 2.1 §2.12: P = t P1 + (1 - t) P2). `u` is 1 - t
+// computed by the caller from the plane distances: 1.0 - t itself rounds to 0 when the
+// crossing lies within 1e-16 of q (a far vertex against a near one), which would put the new
+// vertex on q, possibly behind the eye.
+void lerp_vertex(const ClipSetup& cs, const PVertex& p, const PVertex& q, double t, double u,
+                 PVertex& dst) {
   const PVertex* base = &p;
   const PVertex* toward = &q;
   if (t > 0.5) {
     base = &q;
     toward = &p;
-    t = 1.0 - t;
+    t = u;
   }
   const float s = static_cast<float>(t);
   for (int k = 0; k < 4; ++k)
@@ -50,9 +54,8 @@ inline void snap_to_plane(int p, PVertex& v) {
 // end, so the result depends only on the unordered edge.
 void intersect(const ClipSetup& cs, int p, const PVertex& in, float d_in, const PVertex& out,
                float d_out, PVertex& dst) {
-  const double din = d_in;
-  const double t = din / (din - static_cast<double>(d_out));
-  lerp_vertex(cs, in, out, t, dst);
+  const double din = d_in, dout = d_out;
+  lerp_vertex(cs, in, out, din / (din - dout), -dout / (din - dout), dst);
   snap_to_plane(p, dst);
   to_window(dst, cs.viewport);
 }
@@ -112,8 +115,10 @@ uint32_t clip_code(const ClipSetup& cs, const float* clip) {
     if ((cs.user_mask & (1u << i)) && !(plane_distance(cs, kFirstUserPlane + i, clip) >= 0.0f))
       m |= kClipUser0 << i;
   // w <= 0 only survives the frustum tests at the origin, which has no projection; an
-  // infinite w would pass every test yet poisons interpolation. Both go to the clipper.
-  bool guard = !(clip[3] > 0.0f && clip[3] <= std::numeric_limits<float>::max());
+  // infinite w would pass every test yet poisons interpolation; a denormal w passes too, but
+  // its reciprocal (to_window) overflows to infinity. All go to the clipper.
+  bool guard = !(clip[3] >= std::numeric_limits<float>::min() &&
+                 clip[3] <= std::numeric_limits<float>::max());
   for (int p = kFirstGuardPlane; p < kNumClipPlanes; ++p)
     guard = guard || !(plane_distance(cs, p, clip) >= 0.0f);
   if (guard) m |= kClipGuard;
@@ -191,6 +196,7 @@ bool clip_segment(const ClipSetup& cs, uint32_t planes, const PVertex& a, const 
   scratch.used = 0;
   // Liang-Barsky in clip space: t0 is the fraction cut from a's end, t1 from b's end.
   double t0 = 0.0, t1 = 0.0;
+  double u0 = 1.0, u1 = 1.0; // 1 - t0 and 1 - t1, computed from the distances (lerp_vertex)
   int plane0 = -1, plane1 = -1;
   for (const int p : kPlaneOrder) {
     if (!(planes & (1u << p))) continue;
@@ -202,12 +208,14 @@ bool clip_segment(const ClipSetup& cs, uint32_t planes, const PVertex& a, const 
       const double t = static_cast<double>(da) / (static_cast<double>(da) - db);
       if (t > t0) {
         t0 = t;
+        u0 = -static_cast<double>(db) / (static_cast<double>(da) - db);
         plane0 = p;
       }
     } else if (db < 0.0f) {
       const double t = static_cast<double>(db) / (static_cast<double>(db) - da);
       if (t > t1) {
         t1 = t;
+        u1 = -static_cast<double>(da) / (static_cast<double>(db) - da);
         plane1 = p;
       }
     }
@@ -217,14 +225,14 @@ bool clip_segment(const ClipSetup& cs, uint32_t planes, const PVertex& a, const 
   const PVertex* rb = &b;
   if (plane0 >= 0) {
     PVertex& nv = scratch.pool[scratch.used++];
-    lerp_vertex(cs, a, b, t0, nv);
+    lerp_vertex(cs, a, b, t0, u0, nv);
     snap_to_plane(plane0, nv);
     to_window(nv, cs.viewport);
     ra = &nv;
   }
   if (plane1 >= 0) {
     PVertex& nv = scratch.pool[scratch.used++];
-    lerp_vertex(cs, b, a, t1, nv);
+    lerp_vertex(cs, b, a, t1, u1, nv);
     snap_to_plane(plane1, nv);
     to_window(nv, cs.viewport);
     rb = &nv;

@@ -46,9 +46,13 @@ void copy_vertex(const FaceState& fs, PVertex& dst, const PVertex& src) {
 
 void copy_back_colored(const FaceState& fs, PVertex& dst, const PVertex& src) {
   copy_vertex(fs, dst, src);
+  // The back slots keep the back colours too: raster_triangle selects kAttrBackColor itself
+  // for back-facing polygons, and copy_count need not reach the back slots.
   for (int k = 0; k < 4; ++k) {
     dst.attr[kAttrColor + k] = src.attr[kAttrBackColor + k];
     dst.attr[kAttrColor2 + k] = src.attr[kAttrBackColor2 + k];
+    dst.attr[kAttrBackColor + k] = src.attr[kAttrBackColor + k];
+    dst.attr[kAttrBackColor2 + k] = src.attr[kAttrBackColor2 + k];
   }
 }
 

@@ -126,10 +126,10 @@ const uint8_t* array_base(Context* ctx, const ClientArray& a, size_t max_element
 template <typename Elements>
 bool fetch(Context* ctx, Elements el, size_t n, size_t max_element, InputVertex* out) {
   const VertexArrays& arr = ctx->arrays;
-  const ClientArray* arrays[5] = {&arr.vertex, &arr.color, &arr.normal, &arr.texcoord[0],
-                                  &arr.edgeflag};
-  const uint8_t* bases[5] = {};
-  for (int i = 0; i < 5; ++i) {
+  const ClientArray* arrays[6] = {&arr.vertex,   &arr.color,    &arr.normal,
+                                  &arr.texcoord[0], &arr.edgeflag, &arr.secondary};
+  const uint8_t* bases[6] = {};
+  for (int i = 0; i < 6; ++i) {
     if (!arrays[i]->enabled) continue;
     bases[i] = array_base(ctx, *arrays[i], max_element);
     if (bases[i] == nullptr) return false;
@@ -146,6 +146,8 @@ bool fetch(Context* ctx, Elements el, size_t n, size_t max_element, InputVertex*
   for (int i = 0; i < 4; ++i)
     def.tex[i] = arr.texcoord[0].enabled ? (i == 3 ? 1.0f : 0.0f) : ctx->cur_tex[0][i];
   if (arr.color.enabled && arr.color.size == 3) def.color[3] = 1.0f;
+  for (int i = 0; i < 3; ++i)
+    def.color2[i] = ctx->cur_color2[i];
   def.edge = ctx->cur_edge ? 1u : 0u;
   for (size_t k = 0; k < n; ++k)
     out[k] = def;
@@ -155,6 +157,8 @@ bool fetch(Context* ctx, Elements el, size_t n, size_t max_element, InputVertex*
   if (bases[2]) convert_any(arr.normal, bases[2], true, el, n, out, offsetof(InputVertex, normal));
   if (bases[3])
     convert_any(arr.texcoord[0], bases[3], false, el, n, out, offsetof(InputVertex, tex));
+  if (bases[5])
+    convert_any(arr.secondary, bases[5], true, el, n, out, offsetof(InputVertex, color2));
   if (bases[4]) {
     const size_t stride = array_stride(arr.edgeflag);
     for (size_t k = 0; k < n; ++k)
@@ -168,7 +172,7 @@ bool fetch(Context* ctx, Elements el, size_t n, size_t max_element, InputVertex*
 bool arrays_hold(Context* ctx, size_t max_element) {
   const VertexArrays& arr = ctx->arrays;
   for (const ClientArray* a :
-       {&arr.vertex, &arr.color, &arr.normal, &arr.texcoord[0], &arr.edgeflag})
+       {&arr.vertex, &arr.color, &arr.normal, &arr.texcoord[0], &arr.edgeflag, &arr.secondary})
     if (a->enabled && array_base(ctx, *a, max_element) == nullptr) return false;
   return true;
 }

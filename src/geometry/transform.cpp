@@ -1,11 +1,28 @@
 // Vertex transformation (GL 2.1 §2.11, §2.12, §2.14.6): object coordinates to clip
 // coordinates through the composite matrix, clip codes, window coordinates for vertices that
-// need no clipping, and the clamped primary colour.
+// need no clipping, and the vertex colours: lit (§2.14.1, light_eval.cpp) or the clamped
+// current colours, with the colour sum (§3.9) folded in.
 #include "geometry/clip.h"
 #include "geometry/geometry.h"
+#include "geometry/light_eval.h"
 #include "raster/raster.h"
 
 namespace pineda {
+
+namespace {
+
+// GL 2.1 §3.9 colour sum, folded into the primary colour at the vertex: the fragment's colour
+// is clamp(c_pri + c_sec) with both colours interpolated, and interpolation (clipping, eq.
+// 3.9) is linear, so interpolating the unclamped per-vertex sum and clamping per fragment (as
+// the fragment stage does) gives the same value. The sum must move behind texturing once the
+// texture environment (§3.8.13, which precedes the colour sum) exists.
+inline void add_secondary(float* attr, bool back) {
+  for (int c = 0; c < 3; ++c) attr[kAttrColor + c] += attr[kAttrColor2 + c];
+  if (back)
+    for (int c = 0; c < 3; ++c) attr[kAttrBackColor + c] += attr[kAttrBackColor2 + c];
+}
+
+} // namespace
 
 void draw_vertices(Context* ctx, GLenum mode, const InputVertex* in, size_t n,
                    const uint32_t* indices, size_t count) {
@@ -23,6 +40,21 @@ void draw_vertices(Context* ctx, GLenum mode, const InputVertex* in, size_t n,
   std::vector<PVertex>& out = ctx->pvert_scratch;
   if (out.size() < n) out.resize(n);
   const float* m = &ctx->mvp[0][0]; // column-major
+
+  // GL 2.1 §2.14.1: lighting replaces the current colour. Material calls between Begin and
+  // End (§2.14.2) change the material from a given vertex of the primitive on.
+  LightingState& lighting = ctx->lighting;
+  const bool lit = lighting.enabled;
+  const MaterialChange* changes = lighting.imm_changes.data();
+  const size_t change_count = lit ? lighting.imm_changes.size() : 0;
+  size_t next_change = 0;
+  const Material* material = change_count != 0 ? lighting.begin_material : lighting.material;
+  // §3.9: with lighting on the colour sum always applies and the secondary colour is zero
+  // unless the specular term is separate; otherwise COLOR_SUM adds the current secondary
+  // colour.
+  const bool color_sum = lit ? lighting.setup.separate_specular : lighting.color_sum;
+  const bool two_sided = rs.two_sided;
+
   for (size_t i = 0; i < n; ++i) {
     const InputVertex& v = in[i];
     PVertex& p = out[i];
@@ -31,10 +63,24 @@ void draw_vertices(Context* ctx, GLenum mode, const InputVertex* in, size_t n,
       p.clip[r] = m[r] * x + m[4 + r] * y + m[8 + r] * z + m[12 + r] * w;
     p.clipmask = clip_code(cs, p.clip);
     if (p.clipmask == 0) to_window(p, vp);
-    // GL 2.1 §2.14.6: with lighting off the primary colour is the current colour, clamped.
-    for (int c = 0; c < 4; ++c) {
-      const float col = v.color[c];
-      p.attr[kAttrColor + c] = col > 0.0f ? (col < 1.0f ? col : 1.0f) : 0.0f;
+    if (lit) {
+      while (next_change < change_count && changes[next_change].vertex <= i)
+        material = changes[next_change++].material;
+      light_vertex(lighting.setup, material, v.pos, v.normal, v.color, p.attr);
+      if (color_sum) add_secondary(p.attr, two_sided);
+    } else {
+      // GL 2.1 §2.14.6: with lighting off the primary colour is the current colour, clamped.
+      for (int c = 0; c < 4; ++c) {
+        const float col = v.color[c];
+        p.attr[kAttrColor + c] = col > 0.0f ? (col < 1.0f ? col : 1.0f) : 0.0f;
+      }
+      if (color_sum) {
+        for (int c = 0; c < 3; ++c) {
+          const float col = v.color2[c];
+          p.attr[kAttrColor2 + c] = col > 0.0f ? (col < 1.0f ? col : 1.0f) : 0.0f;
+        }
+        add_secondary(p.attr, false);
+      }
     }
     p.edgeflag = v.edge;
   }

@@ -61,6 +61,20 @@ struct RasterState {
   int attr_count = 4;    // leading PVertex::attr floats that are live (clipped, interpolated)
 
   // Per-fragment operations (GL 2.1 §4.1), in pipeline order.
+  bool scissor_test = false;
+  int scissor[4] = {0, 0, 0, 0}; // glScissor x, y, width, height (§4.1.2)
+
+  bool alpha_test = false;
+  GLenum alpha_func = GL_ALWAYS;
+  float alpha_ref = 0.0f; // clamped to [0,1] by glAlphaFunc (§4.1.4)
+
+  bool stencil_test = false;
+  GLenum stencil_func = GL_ALWAYS;
+  int stencil_ref = 0; // as given; clamped to the buffer's range when used (§4.1.5)
+  uint32_t stencil_value_mask = 0xffffffffu;
+  GLenum stencil_fail = GL_KEEP, stencil_depth_fail = GL_KEEP, stencil_depth_pass = GL_KEEP;
+  uint32_t stencil_writemask = 0xffffffffu; // glStencilMask (§4.2.2)
+
   bool depth_test = false;
   GLenum depth_func = GL_LESS;
   bool depth_write = true;
@@ -71,12 +85,21 @@ struct RasterState {
   GLenum blend_src_a = GL_ONE, blend_dst_a = GL_ZERO;
   GLenum blend_eq_rgb = GL_FUNC_ADD, blend_eq_a = GL_FUNC_ADD;
   float blend_color[4] = {0, 0, 0, 0};
+
+  // GL 2.1 §4.1.10: with the colour logic operation on, blending is off whatever BLEND says.
+  bool logic_op = false;
+  GLenum logic_op_mode = GL_COPY;
 };
+
+struct FragCtx; // fragment/fragment_ops.h
 
 // One draw: the state, the surfaces, and the primitive mode's vertices.
 struct DrawCall {
   const RasterState* state = nullptr;
   Framebuffer* fb = nullptr;
+  // The fragment stage's setup for state and fb, made once per draw by draw_primitives. When
+  // null (tests calling the rasterizers directly) each primitive makes its own.
+  const FragCtx* frag = nullptr;
 };
 
 // Primitive assembly, clipping, culling and rasterization of `count` vertices in `mode`
@@ -117,6 +140,9 @@ struct ClearState {
   bool color_write[4] = {true, true, true, true};
   bool depth_write = true;
   uint32_t stencil_writemask = 0xffffffffu;
+  // GL 2.1 §4.2.3: the scissor test applies to clears.
+  bool scissor_test = false;
+  int scissor[4] = {0, 0, 0, 0};
 };
 void clear_buffers(Framebuffer& fb, const ClearState& cs, GLbitfield mask);
 

@@ -71,12 +71,8 @@ struct BlockBatch {
   }
 };
 
-} // namespace
-
-void raster_line(const DrawCall& dc, const PVertex& a, const PVertex& b,
-                 const PVertex& provoking) {
-  FragCtx ctx;
-  prepare_fragments(*dc.state, *dc.fb, ctx);
+void line(const DrawCall& dc, const FragCtx& ctx, const PVertex& a, const PVertex& b,
+          const PVertex& provoking) {
   if (ctx.noop) return;
   // Snapped like triangle vertices, so lines and polygon edges agree on positions.
   const int64_t xa = to_fixed(a.win[0]), ya = to_fixed(a.win[1]);
@@ -178,6 +174,16 @@ void raster_line(const DrawCall& dc, const PVertex& a, const PVertex& b,
   // The segment starts inside a diamond beyond its centre line: it still exits it.
   if (start_in) batch.add(static_cast<int>(sx), static_cast<int>(sy));
   batch.flush();
+}
+
+} // namespace
+
+void raster_line(const DrawCall& dc, const PVertex& a, const PVertex& b,
+                 const PVertex& provoking) {
+  if (dc.frag != nullptr) return line(dc, *dc.frag, a, b, provoking);
+  FragCtx ctx;
+  prepare_fragments(*dc.state, *dc.fb, ctx);
+  line(dc, ctx, a, b, provoking);
 }
 
 } // namespace pineda

@@ -8,9 +8,9 @@
 
 namespace pineda {
 
-void raster_point(const DrawCall& dc, const PVertex& p) {
-  FragCtx ctx;
-  prepare_fragments(*dc.state, *dc.fb, ctx);
+namespace {
+
+void point(const FragCtx& ctx, const PVertex& p) {
   if (ctx.noop) return;
   // "Truncating" for the (possibly negative, guard band) window coordinates means floor:
   // the fragment is the pixel whose square [x, x+1) x [y, y+1) contains the point.
@@ -27,6 +27,15 @@ void raster_point(const DrawCall& dc, const PVertex& p) {
   const int bx = x & ~(kBlockSize - 1), by = y & ~(kBlockSize - 1);
   const uint64_t bit = uint64_t{1} << (8 * (y - by) + (x - bx));
   ctx.fn[static_cast<int>(ShadePath::Const)](ctx, in, bx, by, bit);
+}
+
+} // namespace
+
+void raster_point(const DrawCall& dc, const PVertex& p) {
+  if (dc.frag != nullptr) return point(*dc.frag, p);
+  FragCtx ctx;
+  prepare_fragments(*dc.state, *dc.fb, ctx);
+  point(ctx, p);
 }
 
 } // namespace pineda

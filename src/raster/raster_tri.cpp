@@ -149,12 +149,8 @@ void traverse(const TriEdges& te, const FragCtx& ctx, const FragInputs& in, Bloc
   }
 }
 
-} // namespace
-
-void raster_triangle(const DrawCall& dc, const PVertex& a, const PVertex& b, const PVertex& c,
-                     const PVertex& provoking, bool back_facing) {
-  FragCtx ctx;
-  prepare_fragments(*dc.state, *dc.fb, ctx);
+void triangle(const DrawCall& dc, const FragCtx& ctx, const PVertex& a, const PVertex& b,
+              const PVertex& c, const PVertex& provoking, bool back_facing) {
   if (ctx.noop) return;
   const SnappedTri t = snap_triangle(a, b, c);
   TriEdges te;
@@ -166,6 +162,16 @@ void raster_triangle(const DrawCall& dc, const PVertex& a, const PVertex& b, con
   const PlaneSetup ps = make_plane_setup(t);
   const ShadePath shade = setup_triangle_inputs(ctx, ps, a, b, c, provoking, rs.flat, slot, in);
   traverse(te, ctx, in, ctx.fn[static_cast<int>(shade)]);
+}
+
+} // namespace
+
+void raster_triangle(const DrawCall& dc, const PVertex& a, const PVertex& b, const PVertex& c,
+                     const PVertex& provoking, bool back_facing) {
+  if (dc.frag != nullptr) return triangle(dc, *dc.frag, a, b, c, provoking, back_facing);
+  FragCtx ctx;
+  prepare_fragments(*dc.state, *dc.fb, ctx);
+  triangle(dc, ctx, a, b, c, provoking, back_facing);
 }
 
 } // namespace pineda

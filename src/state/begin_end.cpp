@@ -30,6 +30,7 @@ inline void vertex(float x, float y, float z, float w) {
   for (int i = 0; i < 4; ++i) v.color[i] = ctx->cur_color[i];
   for (int i = 0; i < 3; ++i) v.normal[i] = ctx->cur_normal[i];
   for (int i = 0; i < 4; ++i) v.tex[i] = ctx->cur_tex[0][i];
+  for (int i = 0; i < 3; ++i) v.color2[i] = ctx->cur_color2[i];
   v.edge = ctx->cur_edge ? 1u : 0u;
 }
 
@@ -37,6 +38,15 @@ inline void color(float r, float g, float b, float a) {
   Context* ctx = current_context();
   if (ctx == nullptr) return;
   ctx->cur_color[0] = r, ctx->cur_color[1] = g, ctx->cur_color[2] = b, ctx->cur_color[3] = a;
+  // GL 2.1 §2.14.3: tracked material properties follow every change of the current colour.
+  if (ctx->lighting.color_material) update_color_material(ctx);
+}
+
+// GL 2.1 §2.7: SecondaryColor3 sets R, G and B of the current secondary colour; A stays 1.
+inline void secondary_color(float r, float g, float b) {
+  Context* ctx = current_context();
+  if (ctx == nullptr) return;
+  ctx->cur_color2[0] = r, ctx->cur_color2[1] = g, ctx->cur_color2[2] = b;
 }
 
 inline void normal(float x, float y, float z) {
@@ -99,6 +109,7 @@ void GLAPIENTRY End() {
   if (!ctx->imm.empty())
     draw_vertices(ctx, mode, ctx->imm.data(), ctx->imm.size(), nullptr, ctx->imm.size());
   ctx->imm.clear();
+  ctx->lighting.imm_changes.clear(); // Material calls of this primitive have been applied
 }
 
 // Each macro line spells out one family of GL 1.0 attribute commands; they differ only in
@@ -142,6 +153,23 @@ PINEDA_COLOR(GLubyte, ub)
 PINEDA_COLOR(GLushort, us)
 PINEDA_COLOR(GLuint, ui)
 #undef PINEDA_COLOR
+
+#define PINEDA_SECONDARY_COLOR(T, S)                                                               \
+  void GLAPIENTRY SecondaryColor3##S(T r, T g, T b) {                                              \
+    secondary_color(norm(r), norm(g), norm(b));                                                    \
+  }                                                                                                \
+  void GLAPIENTRY SecondaryColor3##S##v(const T* v) {                                              \
+    if (v) secondary_color(norm(v[0]), norm(v[1]), norm(v[2]));                                    \
+  }
+PINEDA_SECONDARY_COLOR(GLbyte, b)
+PINEDA_SECONDARY_COLOR(GLshort, s)
+PINEDA_SECONDARY_COLOR(GLint, i)
+PINEDA_SECONDARY_COLOR(GLfloat, f)
+PINEDA_SECONDARY_COLOR(GLdouble, d)
+PINEDA_SECONDARY_COLOR(GLubyte, ub)
+PINEDA_SECONDARY_COLOR(GLushort, us)
+PINEDA_SECONDARY_COLOR(GLuint, ui)
+#undef PINEDA_SECONDARY_COLOR
 
 #define PINEDA_NORMAL(T, S)                                                                        \
   void GLAPIENTRY Normal3##S(T x, T y, T z) { normal(norm(x), norm(y), norm(z)); }                 \

@@ -22,15 +22,17 @@ bool valid_factor(GLenum f, bool is_src) {
   case GL_CONSTANT_COLOR:
   case GL_ONE_MINUS_CONSTANT_COLOR:
   case GL_CONSTANT_ALPHA:
-  case GL_ONE_MINUS_CONSTANT_ALPHA: return true;
+  case GL_ONE_MINUS_CONSTANT_ALPHA:
+    return true;
   // GL 2.1 Table 4.2: SRC_ALPHA_SATURATE is a source factor only.
-  case GL_SRC_ALPHA_SATURATE: return is_src;
-  default: return false;
+  case GL_SRC_ALPHA_SATURATE:
+    return is_src;
+  default:
+    return false;
   }
 }
 
-void set_blend_func(const char* func, GLenum src_rgb, GLenum dst_rgb, GLenum src_a,
-                    GLenum dst_a) {
+void set_blend_func(const char* func, GLenum src_rgb, GLenum dst_rgb, GLenum src_a, GLenum dst_a) {
   PINEDA_CTX_OUTSIDE(func);
   if (!valid_factor(src_rgb, true)) return record_error(ctx, GL_INVALID_ENUM, func, src_rgb);
   if (!valid_factor(dst_rgb, false)) return record_error(ctx, GL_INVALID_ENUM, func, dst_rgb);
@@ -60,8 +62,11 @@ void GLAPIENTRY BlendEquation(GLenum mode) {
   case GL_FUNC_SUBTRACT:
   case GL_FUNC_REVERSE_SUBTRACT:
   case GL_MIN:
-  case GL_MAX: break;
-  default: record_error(ctx, GL_INVALID_ENUM, "glBlendEquation", mode); return;
+  case GL_MAX:
+    break;
+  default:
+    record_error(ctx, GL_INVALID_ENUM, "glBlendEquation", mode);
+    return;
   }
   ctx->blend_eq_rgb = ctx->blend_eq_a = mode;
   mark_dirty(ctx, kDirtyFragment);

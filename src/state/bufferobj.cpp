@@ -12,9 +12,12 @@ namespace {
 
 GLuint* binding_for(Context* ctx, GLenum target) {
   switch (target) {
-  case GL_ARRAY_BUFFER: return &ctx->array_buffer;
-  case GL_ELEMENT_ARRAY_BUFFER: return &ctx->element_array_buffer;
-  default: return nullptr;
+  case GL_ARRAY_BUFFER:
+    return &ctx->array_buffer;
+  case GL_ELEMENT_ARRAY_BUFFER:
+    return &ctx->element_array_buffer;
+  default:
+    return nullptr;
   }
 }
 
@@ -43,8 +46,10 @@ bool valid_usage(GLenum usage) {
   case GL_STATIC_COPY:
   case GL_DYNAMIC_DRAW:
   case GL_DYNAMIC_READ:
-  case GL_DYNAMIC_COPY: return true;
-  default: return false;
+  case GL_DYNAMIC_COPY:
+    return true;
+  default:
+    return false;
   }
 }
 
@@ -75,7 +80,8 @@ void GLAPIENTRY GenBuffers(GLsizei n, GLuint* buffers) {
   if (buffers == nullptr) return;
   GLuint next = 1;
   for (GLsizei i = 0; i < n; ++i) {
-    while (ctx->buffers.count(next) != 0) ++next;
+    while (ctx->buffers.count(next) != 0)
+      ++next;
     ctx->buffers.emplace(next, std::make_unique<BufferObject>());
     buffers[i] = next++;
   }
@@ -198,10 +204,18 @@ void GLAPIENTRY GetBufferParameteriv(GLenum target, GLenum pname, GLint* params)
   BufferObject* bo = bound_buffer(ctx, target, "glGetBufferParameteriv");
   if (bo == nullptr || params == nullptr) return;
   switch (pname) {
-  case GL_BUFFER_SIZE: *params = static_cast<GLint>(bo->data.size()); break;
-  case GL_BUFFER_USAGE: *params = static_cast<GLint>(bo->usage); break;
-  case GL_BUFFER_ACCESS: *params = static_cast<GLint>(bo->access); break;
-  default: *params = bo->mapped ? GL_TRUE : GL_FALSE; break;
+  case GL_BUFFER_SIZE:
+    *params = static_cast<GLint>(bo->data.size());
+    break;
+  case GL_BUFFER_USAGE:
+    *params = static_cast<GLint>(bo->usage);
+    break;
+  case GL_BUFFER_ACCESS:
+    *params = static_cast<GLint>(bo->access);
+    break;
+  default:
+    *params = bo->mapped ? GL_TRUE : GL_FALSE;
+    break;
   }
 }
 

@@ -1,5 +1,8 @@
 // Framebuffer control and clears (GL 2.1 §4.2), pixel storage (§3.6.1) and glReadPixels
 // (§4.3.2).
+#include <algorithm>
+#include <cmath>
+
 #include "core/api_util.h"
 #include "dispatch.h"
 #include "framebuffer/read_pixels.h"
@@ -27,9 +30,10 @@ void pixel_store(const char* func, GLenum pname, double value) {
     return;
   }
   // GL 2.1 §3.6.1: integer parameters from a float value are rounded to the nearest integer.
-  const double rounded = value < 0 ? -static_cast<double>(static_cast<long long>(-value + 0.5))
-                                   : static_cast<double>(static_cast<long long>(value + 0.5));
-  const int iv = rounded > 2147483647.0 ? 2147483647 : static_cast<int>(rounded);
+  // Clamped to the int range first (converting a larger double is undefined); NaN has no
+  // nearest integer and is refused like a negative value.
+  const double v = std::isnan(value) ? -1.0 : std::clamp(value, -2147483648.0, 2147483647.0);
+  const int iv = static_cast<int>(v < 0 ? -std::floor(-v + 0.5) : std::floor(v + 0.5));
   switch (base) {
   case GL_UNPACK_SWAP_BYTES: ps->swap_bytes = value != 0.0; return;
   case GL_UNPACK_LSB_FIRST: ps->lsb_first = value != 0.0; return;
@@ -74,12 +78,15 @@ void GLAPIENTRY Clear(GLbitfield mask) {
   ClearState cs;
   for (int i = 0; i < 4; ++i) {
     cs.color[i] = ctx->clear_color[i];
-    cs.color_write[i] = ctx->color_mask[i];
+    // GL 2.1 §4.2.3: the colour buffers cleared are those enabled for writing (§4.2.1).
+    cs.color_write[i] = ctx->color_mask[i] && ctx->draw_buffer != GL_NONE;
   }
   cs.depth = ctx->clear_depth;
   cs.depth_write = ctx->depth_mask;
   cs.stencil = ctx->clear_stencil;
   cs.stencil_writemask = ctx->stencil_writemask;
+  cs.scissor_test = ctx->scissor_test;
+  for (int i = 0; i < 4; ++i) cs.scissor[i] = ctx->scissor_box[i];
   // GL 2.1 §4.2.3: clearing a buffer that does not exist has no effect.
   GLbitfield m = mask & GL_COLOR_BUFFER_BIT;
   if (ctx->fb.depth != nullptr) m |= mask & GL_DEPTH_BUFFER_BIT;

@@ -16,15 +16,31 @@ bool* capability(Context* ctx, GLenum cap, uint32_t* dirty) {
     *dirty = kDirtyClipPlanes;
     return &ctx->clip_enabled[cap - GL_CLIP_PLANE0];
   }
+  if (cap >= GL_LIGHT0 && cap < GL_LIGHT0 + kMaxLights) {
+    *dirty = kDirtyLighting;
+    return &ctx->lighting.light[cap - GL_LIGHT0].enabled;
+  }
   switch (cap) {
   case GL_CULL_FACE: *dirty = kDirtyPolygon; return &ctx->cull_enabled;
+  // Lighting (GL 2.1 §2.14.1, §2.14.3).
+  case GL_LIGHTING: *dirty = kDirtyLighting; return &ctx->lighting.enabled;
+  case GL_COLOR_MATERIAL: *dirty = kDirtyLighting; return &ctx->lighting.color_material;
+  case GL_COLOR_SUM: *dirty = kDirtyLighting; return &ctx->lighting.color_sum; // §3.9
   case GL_DEPTH_TEST: *dirty = kDirtyFragment; return &ctx->depth_test;
   case GL_BLEND: *dirty = kDirtyFragment; return &ctx->blend;
+  // GL 2.1 §4.1.2, §4.1.4, §4.1.5, §4.1.10.
+  case GL_SCISSOR_TEST: *dirty = kDirtyFragment; return &ctx->scissor_test;
+  case GL_ALPHA_TEST: *dirty = kDirtyFragment; return &ctx->alpha_test;
+  case GL_STENCIL_TEST: *dirty = kDirtyFragment; return &ctx->stencil_test;
+  case GL_COLOR_LOGIC_OP: *dirty = kDirtyFragment; return &ctx->color_logic_op;
+  // GL_LOGIC_OP is the same enum. Index logic ops have no effect in RGBA mode, but the
+  // enable is state all the same.
+  case GL_INDEX_LOGIC_OP: return &ctx->index_logic_op;
   // GL 2.1 §4.1.9: dithering may be a no-op; the flag is still state.
   case GL_DITHER: return &ctx->dither;
-  // Normals only feed lighting and texgen; the flags are kept for queries and for them.
-  case GL_NORMALIZE: return &ctx->normalize;
-  case GL_RESCALE_NORMAL: return &ctx->rescale_normal;
+  // GL 2.1 §2.11.3: normals are rescaled or normalized before lighting.
+  case GL_NORMALIZE: *dirty = kDirtyLighting; return &ctx->normalize;
+  case GL_RESCALE_NORMAL: *dirty = kDirtyLighting; return &ctx->rescale_normal;
   default: return nullptr;
   }
 }
@@ -36,6 +52,7 @@ ClientArray* client_array(Context* ctx, GLenum array) {
   case GL_NORMAL_ARRAY: return &ctx->arrays.normal;
   case GL_TEXTURE_COORD_ARRAY: return &ctx->arrays.texcoord[ctx->client_active_texture];
   case GL_EDGE_FLAG_ARRAY: return &ctx->arrays.edgeflag;
+  case GL_SECONDARY_COLOR_ARRAY: return &ctx->arrays.secondary;
   default: return nullptr;
   }
 }
@@ -51,6 +68,9 @@ void set_capability(const char* func, GLenum cap, bool value) {
   if (*flag == value) return;
   *flag = value;
   mark_dirty(ctx, dirty);
+  // GL 2.1 §2.14.3: enabling COLOR_MATERIAL makes the tracked properties take the current
+  // colour at once.
+  if (cap == GL_COLOR_MATERIAL && value) update_color_material(ctx);
 }
 
 void set_client_state(const char* func, GLenum array, bool value) {
@@ -123,8 +143,15 @@ void GLAPIENTRY Hint(GLenum target, GLenum mode) {
 }
 
 // Rendering is synchronous: every command has completed when it returns (GL 2.1 §5.5).
-void GLAPIENTRY Flush() { outside_begin_end("glFlush"); }
-void GLAPIENTRY Finish() { outside_begin_end("glFinish"); }
+// Rendering is synchronous, so both only hand the front buffer to the window system.
+void GLAPIENTRY Flush() {
+  Context* ctx = outside_begin_end("glFlush");
+  if (ctx != nullptr && ctx->present_front != nullptr) ctx->present_front(ctx);
+}
+void GLAPIENTRY Finish() {
+  Context* ctx = outside_begin_end("glFinish");
+  if (ctx != nullptr && ctx->present_front != nullptr) ctx->present_front(ctx);
+}
 
 } // namespace exec
 } // namespace pineda

@@ -50,6 +50,10 @@ const ClientArray* array_for(Context* ctx, GLenum pname) {
     return &ctx->arrays.texcoord[ctx->client_active_texture];
   case GL_EDGE_FLAG_ARRAY_STRIDE:
   case GL_EDGE_FLAG_ARRAY_BUFFER_BINDING: return &ctx->arrays.edgeflag;
+  case GL_SECONDARY_COLOR_ARRAY_SIZE:
+  case GL_SECONDARY_COLOR_ARRAY_TYPE:
+  case GL_SECONDARY_COLOR_ARRAY_STRIDE:
+  case GL_SECONDARY_COLOR_ARRAY_BUFFER_BINDING: return &ctx->arrays.secondary;
   default: return nullptr;
   }
 }
@@ -66,16 +70,19 @@ bool get_values(Context* ctx, GLenum pname, Values& out) {
     switch (pname) {
     case GL_VERTEX_ARRAY_SIZE:
     case GL_COLOR_ARRAY_SIZE:
-    case GL_TEXTURE_COORD_ARRAY_SIZE: out.add(a->size); break;
+    case GL_TEXTURE_COORD_ARRAY_SIZE:
+    case GL_SECONDARY_COLOR_ARRAY_SIZE: out.add(a->size); break;
     case GL_VERTEX_ARRAY_TYPE:
     case GL_COLOR_ARRAY_TYPE:
     case GL_NORMAL_ARRAY_TYPE:
-    case GL_TEXTURE_COORD_ARRAY_TYPE: out.add(a->type); break;
+    case GL_TEXTURE_COORD_ARRAY_TYPE:
+    case GL_SECONDARY_COLOR_ARRAY_TYPE: out.add(a->type); break;
     case GL_VERTEX_ARRAY_STRIDE:
     case GL_COLOR_ARRAY_STRIDE:
     case GL_NORMAL_ARRAY_STRIDE:
     case GL_TEXTURE_COORD_ARRAY_STRIDE:
-    case GL_EDGE_FLAG_ARRAY_STRIDE: out.add(a->stride); break;
+    case GL_EDGE_FLAG_ARRAY_STRIDE:
+    case GL_SECONDARY_COLOR_ARRAY_STRIDE: out.add(a->stride); break;
     default: out.add(a->buffer); break;
     }
     return true;
@@ -86,6 +93,10 @@ bool get_values(Context* ctx, GLenum pname, Values& out) {
   case GL_CURRENT_COLOR:
     out.kind = Kind::Normalized;
     for (float c : ctx->cur_color) out.add(c);
+    return true;
+  case GL_CURRENT_SECONDARY_COLOR:
+    out.kind = Kind::Normalized;
+    for (float c : ctx->cur_color2) out.add(c);
     return true;
   case GL_CURRENT_NORMAL:
     out.kind = Kind::Normalized;
@@ -127,6 +138,23 @@ bool get_values(Context* ctx, GLenum pname, Values& out) {
     out.add(ctx->depth_near), out.add(ctx->depth_far);
     return true;
 
+  // Lighting (Tables 6.11-6.13); lights and materials are read with GetLight / GetMaterial.
+  case GL_COLOR_MATERIAL_FACE: out.add(ctx->lighting.color_material_face); return true;
+  case GL_COLOR_MATERIAL_PARAMETER: out.add(ctx->lighting.color_material_mode); return true;
+  case GL_LIGHT_MODEL_AMBIENT:
+    out.kind = Kind::Normalized;
+    for (float c : ctx->lighting.model_ambient) out.add(c);
+    return true;
+  case GL_LIGHT_MODEL_LOCAL_VIEWER:
+    out.kind = Kind::Bool;
+    out.add(ctx->lighting.local_viewer ? 1 : 0);
+    return true;
+  case GL_LIGHT_MODEL_TWO_SIDE:
+    out.kind = Kind::Bool;
+    out.add(ctx->lighting.two_side ? 1 : 0);
+    return true;
+  case GL_LIGHT_MODEL_COLOR_CONTROL: out.add(ctx->lighting.color_control); return true;
+
   // Rasterization (Tables 6.11-6.12).
   case GL_CULL_FACE_MODE: out.add(ctx->cull_face); return true;
   case GL_FRONT_FACE: out.add(ctx->front_face); return true;
@@ -160,6 +188,29 @@ bool get_values(Context* ctx, GLenum pname, Values& out) {
     for (bool b : ctx->color_mask) out.add(b ? 1 : 0);
     return true;
   case GL_STENCIL_CLEAR_VALUE: out.add(ctx->clear_stencil); return true;
+  case GL_SCISSOR_BOX:
+    for (GLint v : ctx->scissor_box) out.add(v);
+    return true;
+  case GL_ALPHA_TEST_FUNC: out.add(ctx->alpha_func); return true;
+  case GL_ALPHA_TEST_REF:
+    out.kind = Kind::Normalized;
+    out.add(ctx->alpha_ref);
+    return true;
+  case GL_STENCIL_FUNC: out.add(ctx->stencil_func); return true;
+  // GL 2.1 §4.1.5: the reference reads back clamped to [0, 2^s - 1].
+  case GL_STENCIL_REF: {
+    const int top = fb.stencil ? (1 << fb.stencil_bits) - 1 : 0;
+    out.add(ctx->stencil_ref < 0 ? 0 : (ctx->stencil_ref > top ? top : ctx->stencil_ref));
+    return true;
+  }
+  case GL_STENCIL_VALUE_MASK: out.add(ctx->stencil_value_mask); return true;
+  case GL_STENCIL_WRITEMASK: out.add(ctx->stencil_writemask); return true;
+  case GL_STENCIL_FAIL: out.add(ctx->stencil_fail); return true;
+  case GL_STENCIL_PASS_DEPTH_FAIL: out.add(ctx->stencil_depth_fail); return true;
+  case GL_STENCIL_PASS_DEPTH_PASS: out.add(ctx->stencil_depth_pass); return true;
+  case GL_LOGIC_OP_MODE: out.add(ctx->logic_op); return true;
+  case GL_DRAW_BUFFER: out.add(ctx->draw_buffer); return true;
+  case GL_READ_BUFFER: out.add(ctx->read_buffer); return true;
   case GL_BLEND_SRC:
   case GL_BLEND_SRC_RGB: out.add(ctx->blend_src_rgb); return true;
   case GL_BLEND_DST:
@@ -226,6 +277,7 @@ bool get_values(Context* ctx, GLenum pname, Values& out) {
   case GL_SUBPIXEL_BITS: out.add(kSubpixelBits); return true;
   case GL_MAX_VIEWPORT_DIMS: out.add(kMaxViewportDim), out.add(kMaxViewportDim); return true;
   case GL_MAX_CLIP_PLANES: out.add(kMaxClipPlanes); return true;
+  case GL_MAX_LIGHTS: out.add(kMaxLights); return true;
   case GL_MAX_MODELVIEW_STACK_DEPTH: out.add(double(kModelviewStackDepth)); return true;
   case GL_MAX_PROJECTION_STACK_DEPTH: out.add(double(kProjectionStackDepth)); return true;
   case GL_MAX_TEXTURE_STACK_DEPTH: out.add(double(kTextureStackDepth)); return true;
@@ -304,7 +356,8 @@ const GLubyte* GLAPIENTRY GetString(GLenum name) {
   // Honest version (GL 2.1 §6.1.11): the fixed-function feature set is not complete yet, so
   // only the GL 1.1 number is claimed, with the gaps spelled out.
   case GL_VERSION:
-    s = "1.1 Pineda 0.1 (subset: no lighting, texturing, fog, stencil or display lists yet)";
+    s = "1.1 Pineda 0.1 (subset: no texturing, fog, display lists, pixel drawing, accumulation, "
+        "selection or attribute stack yet)";
     break;
   case GL_EXTENSIONS: s = ""; break;
   default: record_error(ctx, GL_INVALID_ENUM, "glGetString", name); return nullptr;
@@ -351,6 +404,7 @@ void GLAPIENTRY GetPointerv(GLenum pname, void** params) {
     p = ctx->arrays.texcoord[ctx->client_active_texture].pointer;
     break;
   case GL_EDGE_FLAG_ARRAY_POINTER: p = ctx->arrays.edgeflag.pointer; break;
+  case GL_SECONDARY_COLOR_ARRAY_POINTER: p = ctx->arrays.secondary.pointer; break;
   default: return record_error(ctx, GL_INVALID_ENUM, "glGetPointerv", pname);
   }
   if (params != nullptr) *params = const_cast<void*>(p);

@@ -13,9 +13,12 @@ namespace {
 
 MatrixStack& current_stack(Context* ctx) {
   switch (ctx->matrix_mode) {
-  case GL_PROJECTION: return ctx->projection;
-  case GL_TEXTURE: return ctx->texture[ctx->active_texture];
-  default: return ctx->modelview;
+  case GL_PROJECTION:
+    return ctx->projection;
+  case GL_TEXTURE:
+    return ctx->texture[ctx->active_texture];
+  default:
+    return ctx->modelview;
   }
 }
 
@@ -41,14 +44,16 @@ void mult(const char* func, const glm::mat4& m) {
 template <typename T> glm::mat4 from_column_major(const T* m) {
   glm::mat4 r;
   for (int c = 0; c < 4; ++c)
-    for (int rr = 0; rr < 4; ++rr) r[c][rr] = static_cast<float>(m[c * 4 + rr]);
+    for (int rr = 0; rr < 4; ++rr)
+      r[c][rr] = static_cast<float>(m[c * 4 + rr]);
   return r;
 }
 
 template <typename T> glm::mat4 from_row_major(const T* m) {
   glm::mat4 r;
   for (int c = 0; c < 4; ++c)
-    for (int rr = 0; rr < 4; ++rr) r[c][rr] = static_cast<float>(m[rr * 4 + c]);
+    for (int rr = 0; rr < 4; ++rr)
+      r[c][rr] = static_cast<float>(m[rr * 4 + c]);
   return r;
 }
 
@@ -103,7 +108,9 @@ void GLAPIENTRY MatrixMode(GLenum mode) {
   ctx->matrix_mode = mode;
 }
 
-void GLAPIENTRY LoadIdentity() { load("glLoadIdentity", glm::mat4(1.0f)); }
+void GLAPIENTRY LoadIdentity() {
+  load("glLoadIdentity", glm::mat4(1.0f));
+}
 void GLAPIENTRY LoadMatrixf(const GLfloat* m) {
   if (m != nullptr) load("glLoadMatrixf", from_column_major(m));
 }
@@ -142,7 +149,9 @@ void GLAPIENTRY Translatef(GLfloat x, GLfloat y, GLfloat z) {
 void GLAPIENTRY Translated(GLdouble x, GLdouble y, GLdouble z) {
   mult("glTranslated", translation(x, y, z));
 }
-void GLAPIENTRY Scalef(GLfloat x, GLfloat y, GLfloat z) { mult("glScalef", scaling(x, y, z)); }
+void GLAPIENTRY Scalef(GLfloat x, GLfloat y, GLfloat z) {
+  mult("glScalef", scaling(x, y, z));
+}
 void GLAPIENTRY Scaled(GLdouble x, GLdouble y, GLdouble z) {
   mult("glScaled", scaling(x, y, z));
 }

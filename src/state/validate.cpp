@@ -4,6 +4,7 @@
 
 #include "core/context.h"
 #include "geometry/geometry.h"
+#include "geometry/light_eval.h"
 
 namespace pineda {
 
@@ -51,7 +52,9 @@ void validate_state(Context* ctx) {
     rs.depth_test = ctx->depth_test && ctx->fb.depth != nullptr;
     rs.depth_func = ctx->depth_func;
     rs.depth_write = ctx->depth_mask;
-    for (int i = 0; i < 4; ++i) rs.color_write[i] = ctx->color_mask[i];
+    // GL 2.1 §4.2.1: with the draw buffer NONE no colour is written.
+    const bool draws_color = ctx->draw_buffer != GL_NONE;
+    for (int i = 0; i < 4; ++i) rs.color_write[i] = ctx->color_mask[i] && draws_color;
     rs.blend = ctx->blend;
     rs.blend_src_rgb = ctx->blend_src_rgb;
     rs.blend_dst_rgb = ctx->blend_dst_rgb;
@@ -60,8 +63,35 @@ void validate_state(Context* ctx) {
     rs.blend_eq_rgb = ctx->blend_eq_rgb;
     rs.blend_eq_a = ctx->blend_eq_a;
     for (int i = 0; i < 4; ++i) rs.blend_color[i] = ctx->blend_color[i];
+    rs.scissor_test = ctx->scissor_test;
+    for (int i = 0; i < 4; ++i) rs.scissor[i] = ctx->scissor_box[i];
+    rs.alpha_test = ctx->alpha_test;
+    rs.alpha_func = ctx->alpha_func;
+    rs.alpha_ref = ctx->alpha_ref;
+    // GL 2.1 §4.1.5: without a stencil buffer the test always passes and writes nothing.
+    rs.stencil_test = ctx->stencil_test && ctx->fb.stencil != nullptr;
+    rs.stencil_func = ctx->stencil_func;
+    rs.stencil_ref = ctx->stencil_ref;
+    rs.stencil_value_mask = ctx->stencil_value_mask;
+    rs.stencil_fail = ctx->stencil_fail;
+    rs.stencil_depth_fail = ctx->stencil_depth_fail;
+    rs.stencil_depth_pass = ctx->stencil_depth_pass;
+    rs.stencil_writemask = ctx->stencil_writemask;
+    rs.logic_op = ctx->color_logic_op;
+    rs.logic_op_mode = ctx->logic_op;
   }
-  // Only the primary colour is read by the fragment stage until texturing and fog exist.
+  if (dirty & (kDirtyLighting | kDirtyTransform)) {
+    // GL 2.1 §2.14.1: light positions are already in eye space; the normal matrix and the
+    // per-light constants depend on the model-view matrix.
+    const LightingState& ls = ctx->lighting;
+    if (ls.enabled)
+      setup_lighting(ctx->lighting.setup, ls, ctx->modelview.top(), ctx->normalize,
+                     ctx->rescale_normal);
+    // §2.14.1: back colours are computed and selected only with two-sided lighting on.
+    rs.two_sided = ls.enabled && ls.two_side;
+  }
+  // Only the primary colour is read by the fragment stage until texturing and fog exist
+  // (transform.cpp folds the colour sum of §3.9 into it).
   rs.attr_count = 4;
   ctx->dirty = 0;
 }

@@ -1,6 +1,7 @@
 // Vertex arrays (GL 2.1 §2.8): array pointers, glArrayElement, the Draw* commands,
 // glInterleavedArrays, and the client attribute stack (§6.1.14).
 #include <algorithm>
+#include <cstdint>
 #include <cstring>
 
 #include "core/api_util.h"
@@ -12,7 +13,9 @@ namespace pineda {
 
 namespace {
 
-bool valid_mode(GLenum mode) { return mode <= GL_POLYGON; }
+bool valid_mode(GLenum mode) {
+  return mode <= GL_POLYGON;
+}
 
 void set_pointer(const char* func, ClientArray& a, GLint size, GLenum type, GLsizei stride,
                  const void* ptr, Context* ctx) {
@@ -36,10 +39,12 @@ bool arrays_mapped(Context* ctx, bool with_elements) {
     return it != ctx->buffers.end() && it->second->mapped;
   };
   const VertexArrays& a = ctx->arrays;
-  if ((a.vertex.enabled && mapped(a.vertex.buffer)) || (a.color.enabled && mapped(a.color.buffer)) ||
+  if ((a.vertex.enabled && mapped(a.vertex.buffer)) ||
+      (a.color.enabled && mapped(a.color.buffer)) ||
       (a.normal.enabled && mapped(a.normal.buffer)) ||
       (a.texcoord[0].enabled && mapped(a.texcoord[0].buffer)) ||
-      (a.edgeflag.enabled && mapped(a.edgeflag.buffer)))
+      (a.edgeflag.enabled && mapped(a.edgeflag.buffer)) ||
+      (a.secondary.enabled && mapped(a.secondary.buffer)))
     return true;
   return with_elements && mapped(ctx->element_array_buffer);
 }
@@ -63,8 +68,7 @@ bool read_indices(Context* ctx, GLsizei count, GLenum type, const void* indices)
     auto it = ctx->buffers.find(ctx->element_array_buffer);
     if (it == ctx->buffers.end()) return false;
     const size_t offset = reinterpret_cast<uintptr_t>(indices);
-    if (offset > it->second->data.size() || bytes > it->second->data.size() - offset)
-      return false;
+    if (offset > it->second->data.size() || bytes > it->second->data.size() - offset) return false;
     src = it->second->data.data() + offset;
   } else if (src == nullptr) {
     return false;
@@ -73,7 +77,8 @@ bool read_indices(Context* ctx, GLsizei count, GLenum type, const void* indices)
   uint32_t* dst = ctx->index_scratch.data();
   switch (type) {
   case GL_UNSIGNED_BYTE:
-    for (GLsizei i = 0; i < count; ++i) dst[i] = src[i];
+    for (GLsizei i = 0; i < count; ++i)
+      dst[i] = src[i];
     break;
   case GL_UNSIGNED_SHORT:
     for (GLsizei i = 0; i < count; ++i) {
@@ -102,7 +107,8 @@ void draw_indexed(Context* ctx, GLenum mode, GLsizei count, GLenum type, const v
   if (span <= 4 * static_cast<size_t>(count) + 1024) {
     ctx->fetch_scratch.resize(span);
     if (!fetch_range(ctx, lo, span, ctx->fetch_scratch.data())) return;
-    for (uint32_t& i : idx) i -= lo;
+    for (uint32_t& i : idx)
+      i -= lo;
     draw_vertices(ctx, mode, ctx->fetch_scratch.data(), span, idx.data(), idx.size());
   } else {
     ctx->fetch_scratch.resize(idx.size());
@@ -155,6 +161,17 @@ void GLAPIENTRY ColorPointer(GLint size, GLenum type, GLsizei stride, const void
   set_pointer("glColorPointer", ctx->arrays.color, size, type, stride, ptr, ctx);
 }
 
+// GL 2.1 §2.8: the secondary colour array always has three components.
+void GLAPIENTRY SecondaryColorPointer(GLint size, GLenum type, GLsizei stride, const void* ptr) {
+  PINEDA_CTX_OUTSIDE("glSecondaryColorPointer");
+  if (size != 3 || stride < 0)
+    return record_error(ctx, GL_INVALID_VALUE, "glSecondaryColorPointer");
+  if (!type_in(type, {GL_BYTE, GL_UNSIGNED_BYTE, GL_SHORT, GL_UNSIGNED_SHORT, GL_INT,
+                      GL_UNSIGNED_INT, GL_FLOAT, GL_DOUBLE}))
+    return record_error(ctx, GL_INVALID_ENUM, "glSecondaryColorPointer", type);
+  set_pointer("glSecondaryColorPointer", ctx->arrays.secondary, size, type, stride, ptr, ctx);
+}
+
 void GLAPIENTRY NormalPointer(GLenum type, GLsizei stride, const void* ptr) {
   PINEDA_CTX_OUTSIDE("glNormalPointer");
   if (stride < 0) return record_error(ctx, GL_INVALID_VALUE, "glNormalPointer");
@@ -188,7 +205,11 @@ void GLAPIENTRY ArrayElement(GLint i) {
   InputVertex v;
   if (!fetch_range(ctx, static_cast<size_t>(i), 1, &v)) return;
   const VertexArrays& a = ctx->arrays;
-  if (a.color.enabled) std::copy(v.color, v.color + 4, ctx->cur_color);
+  if (a.color.enabled) {
+    std::copy(v.color, v.color + 4, ctx->cur_color);
+    if (ctx->lighting.color_material) update_color_material(ctx); // as Color does (§2.14.3)
+  }
+  if (a.secondary.enabled) std::copy(v.color2, v.color2 + 3, ctx->cur_color2);
   if (a.normal.enabled) std::copy(v.normal, v.normal + 3, ctx->cur_normal);
   if (a.texcoord[0].enabled) std::copy(v.tex, v.tex + 4, ctx->cur_tex[0]);
   if (a.edgeflag.enabled) ctx->cur_edge = v.edge != 0;
@@ -211,8 +232,8 @@ void GLAPIENTRY DrawElements(GLenum mode, GLsizei count, GLenum type, const void
 
 // GL 2.1 §2.8: the range is a promise; Pineda checks only end >= start and draws as
 // DrawElements (indices outside the range are still fetched correctly).
-void GLAPIENTRY DrawRangeElements(GLenum mode, GLuint start, GLuint end, GLsizei count,
-                                  GLenum type, const void* indices) {
+void GLAPIENTRY DrawRangeElements(GLenum mode, GLuint start, GLuint end, GLsizei count, GLenum type,
+                                  const void* indices) {
   PINEDA_CTX_OUTSIDE("glDrawRangeElements");
   if (end < start) return record_error(ctx, GL_INVALID_VALUE, "glDrawRangeElements");
   if (!check_elements(ctx, "glDrawRangeElements", mode, count, type)) return;
@@ -242,7 +263,8 @@ void GLAPIENTRY MultiDrawElements(GLenum mode, const GLsizei* count, GLenum type
   if (drawcount == 0 || count == nullptr || indices == nullptr) return;
   for (GLsizei i = 0; i < drawcount; ++i)
     if (count[i] < 0) return record_error(ctx, GL_INVALID_VALUE, "glMultiDrawElements");
-  for (GLsizei i = 0; i < drawcount; ++i) draw_indexed(ctx, mode, count[i], type, indices[i]);
+  for (GLsizei i = 0; i < drawcount; ++i)
+    draw_indexed(ctx, mode, count[i], type, indices[i]);
 }
 
 // GL 2.1 §2.8 Table 2.5: the fourteen interleaved layouts.
@@ -281,18 +303,24 @@ void GLAPIENTRY InterleavedArrays(GLenum format, GLsizei stride, const void* poi
                           format == GL_T2F_N3F_V3F || format == GL_T2F_C4F_N3F_V3F ||
                           format == GL_T4F_C4F_N3F_V4F;
   const GLsizei s = stride != 0 ? stride : l->s;
-  const uint8_t* p = static_cast<const uint8_t*>(pointer);
+  // `pointer` is often an offset into a buffer object, zero included: the field offsets are
+  // added as integers, since arithmetic on a null pointer is undefined.
+  const auto field = [pointer](int offset) {
+    return reinterpret_cast<const void*>(reinterpret_cast<uintptr_t>(pointer) +
+                                         static_cast<uintptr_t>(offset));
+  };
   VertexArrays& a = ctx->arrays;
   ClientArray& tex = a.texcoord[ctx->client_active_texture];
   a.edgeflag.enabled = false;
+  a.secondary.enabled = false; // GL 2.1 §2.8: InterleavedArrays disables the other arrays
   tex.enabled = l->et;
-  if (l->et) set_pointer("glInterleavedArrays", tex, l->st, GL_FLOAT, s, p, ctx);
+  if (l->et) set_pointer("glInterleavedArrays", tex, l->st, GL_FLOAT, s, pointer, ctx);
   a.color.enabled = l->ec;
-  if (l->ec) set_pointer("glInterleavedArrays", a.color, l->sc, l->tc, s, p + l->pc, ctx);
+  if (l->ec) set_pointer("glInterleavedArrays", a.color, l->sc, l->tc, s, field(l->pc), ctx);
   a.normal.enabled = has_normal;
-  if (has_normal) set_pointer("glInterleavedArrays", a.normal, 3, GL_FLOAT, s, p + l->pn, ctx);
+  if (has_normal) set_pointer("glInterleavedArrays", a.normal, 3, GL_FLOAT, s, field(l->pn), ctx);
   a.vertex.enabled = true;
-  set_pointer("glInterleavedArrays", a.vertex, l->sv, GL_FLOAT, s, p + l->pv, ctx);
+  set_pointer("glInterleavedArrays", a.vertex, l->sv, GL_FLOAT, s, field(l->pv), ctx);
 }
 
 void GLAPIENTRY PushClientAttrib(GLbitfield mask) {

@@ -45,7 +45,8 @@ void GLAPIENTRY ClipPlane(GLenum plane, const GLdouble* eq) {
   const glm::dvec4 p(eq[0], eq[1], eq[2], eq[3]);
   const glm::dvec4 e = p * inv; // row vector times matrix
   double* dst = ctx->clip_plane[plane - GL_CLIP_PLANE0];
-  for (int i = 0; i < 4; ++i) dst[i] = e[i];
+  for (int i = 0; i < 4; ++i)
+    dst[i] = e[i];
   mark_dirty(ctx, kDirtyClipPlanes);
 }
 
@@ -56,7 +57,8 @@ void GLAPIENTRY GetClipPlane(GLenum plane, GLdouble* eq) {
     return;
   }
   if (eq == nullptr) return;
-  for (int i = 0; i < 4; ++i) eq[i] = ctx->clip_plane[plane - GL_CLIP_PLANE0][i];
+  for (int i = 0; i < 4; ++i)
+    eq[i] = ctx->clip_plane[plane - GL_CLIP_PLANE0][i];
 }
 
 } // namespace exec

@@ -41,10 +41,14 @@ thread_local OSMesaState* t_current_osmesa = nullptr;
 
 ColorFormat color_format(GLenum format) {
   switch (format) {
-  case OSMESA_BGRA: return ColorFormat::BGRA8;
-  case OSMESA_ARGB: return ColorFormat::ARGB8;
-  case OSMESA_RGB: return ColorFormat::RGB8;
-  default: return ColorFormat::RGBA8;
+  case OSMESA_BGRA:
+    return ColorFormat::BGRA8;
+  case OSMESA_ARGB:
+    return ColorFormat::ARGB8;
+  case OSMESA_RGB:
+    return ColorFormat::RGB8;
+  default:
+    return ColorFormat::RGBA8;
   }
 }
 
@@ -95,8 +99,7 @@ using pineda::OSMesaState;
 OSMESA_EXPORT OSMesaContext OSMesaCreateContextExt(GLenum format, GLint depthBits,
                                                    GLint stencilBits, GLint accumBits,
                                                    OSMesaContext /*sharelist*/) {
-  return reinterpret_cast<OSMesaContext>(
-      pineda::create(format, depthBits, stencilBits, accumBits));
+  return reinterpret_cast<OSMesaContext>(pineda::create(format, depthBits, stencilBits, accumBits));
 }
 
 OSMESA_EXPORT OSMesaContext OSMesaCreateContext(GLenum format, OSMesaContext sharelist) {
@@ -111,17 +114,30 @@ OSMESA_EXPORT OSMesaContext OSMesaCreateContextAttribs(const int* attribList,
   for (int i = 0; attribList != nullptr && attribList[i] != 0; i += 2) {
     const int value = attribList[i + 1];
     switch (attribList[i]) {
-    case OSMESA_FORMAT: format = static_cast<GLenum>(value); break;
-    case OSMESA_DEPTH_BITS: depth = value; break;
-    case OSMESA_STENCIL_BITS: stencil = value; break;
-    case OSMESA_ACCUM_BITS: accum = value; break;
+    case OSMESA_FORMAT:
+      format = static_cast<GLenum>(value);
+      break;
+    case OSMESA_DEPTH_BITS:
+      depth = value;
+      break;
+    case OSMESA_STENCIL_BITS:
+      stencil = value;
+      break;
+    case OSMESA_ACCUM_BITS:
+      accum = value;
+      break;
     case OSMESA_PROFILE:
       // Only the compatibility profile exists here.
       if (value != OSMESA_COMPAT_PROFILE) return nullptr;
       break;
-    case OSMESA_CONTEXT_MAJOR_VERSION: major = value; break;
-    case OSMESA_CONTEXT_MINOR_VERSION: minor = value; break;
-    default: return nullptr;
+    case OSMESA_CONTEXT_MAJOR_VERSION:
+      major = value;
+      break;
+    case OSMESA_CONTEXT_MINOR_VERSION:
+      minor = value;
+      break;
+    default:
+      return nullptr;
     }
   }
   // The version glGetString(GL_VERSION) reports is the most that can be promised.
@@ -163,13 +179,15 @@ OSMESA_EXPORT GLboolean OSMesaMakeCurrent(OSMesaContext ctx, void* buffer, GLenu
   s->height = height;
   pineda::attach_surfaces(s);
   pineda::Context* gl = &s->gl;
-  // GL 2.1 §2.11.1: the viewport starts as the whole window the first time the context is
-  // made current.
+  // GL 2.1 §2.11.1, §4.1.2: the viewport and the scissor box start as the whole window the
+  // first time the context is made current.
   if (!gl->ever_current) {
     gl->ever_current = true;
     gl->vp_w = width;
     gl->vp_h = height;
-    pineda::mark_dirty(gl, pineda::kDirtyViewport);
+    gl->scissor_box[2] = width;
+    gl->scissor_box[3] = height;
+    pineda::mark_dirty(gl, pineda::kDirtyViewport | pineda::kDirtyFragment);
   }
   pineda::t_current_osmesa = s;
   pineda::set_current_context(gl);
@@ -188,8 +206,11 @@ OSMESA_EXPORT void OSMesaPixelStore(GLint pname, GLint value) {
     if (value < 0) return;
     s->row_length = value;
     break;
-  case OSMESA_Y_UP: s->y_up = value != 0; break;
-  default: return;
+  case OSMESA_Y_UP:
+    s->y_up = value != 0;
+    break;
+  default:
+    return;
   }
   pineda::attach_surfaces(s);
 }
@@ -198,15 +219,30 @@ OSMESA_EXPORT void OSMesaGetIntegerv(GLint pname, GLint* value) {
   OSMesaState* s = pineda::t_current_osmesa;
   if (value == nullptr) return;
   switch (pname) {
-  case OSMESA_WIDTH: *value = s ? s->width : 0; break;
-  case OSMESA_HEIGHT: *value = s ? s->height : 0; break;
-  case OSMESA_FORMAT: *value = s ? static_cast<GLint>(s->format) : 0; break;
-  case OSMESA_TYPE: *value = s ? static_cast<GLint>(s->type) : 0; break;
-  case OSMESA_ROW_LENGTH: *value = s ? s->row_length : 0; break;
-  case OSMESA_Y_UP: *value = s ? (s->y_up ? 1 : 0) : 0; break;
+  case OSMESA_WIDTH:
+    *value = s ? s->width : 0;
+    break;
+  case OSMESA_HEIGHT:
+    *value = s ? s->height : 0;
+    break;
+  case OSMESA_FORMAT:
+    *value = s ? static_cast<GLint>(s->format) : 0;
+    break;
+  case OSMESA_TYPE:
+    *value = s ? static_cast<GLint>(s->type) : 0;
+    break;
+  case OSMESA_ROW_LENGTH:
+    *value = s ? s->row_length : 0;
+    break;
+  case OSMESA_Y_UP:
+    *value = s ? (s->y_up ? 1 : 0) : 0;
+    break;
   case OSMESA_MAX_WIDTH:
-  case OSMESA_MAX_HEIGHT: *value = pineda::kMaxSize; break;
-  default: break;
+  case OSMESA_MAX_HEIGHT:
+    *value = pineda::kMaxSize;
+    break;
+  default:
+    break;
   }
 }
 

@@ -122,11 +122,35 @@ std::vector<Call> illegal_inside_begin_end() {
        [] { glGetBufferParameteriv(GL_ARRAY_BUFFER, GL_BUFFER_SIZE, iv); }},
       {"glGetBufferPointerv",
        [] { glGetBufferPointerv(GL_ARRAY_BUFFER, GL_BUFFER_MAP_POINTER, &pv); }},
+      {"glLightf", [] { glLightf(GL_LIGHT0, GL_SPOT_EXPONENT, 2); }},
+      {"glLighti", [] { glLighti(GL_LIGHT0, GL_SPOT_EXPONENT, 2); }},
+      {"glLightfv", [] { glLightfv(GL_LIGHT0, GL_AMBIENT, fv); }},
+      {"glLightiv", [] { glLightiv(GL_LIGHT0, GL_AMBIENT, iv); }},
+      {"glGetLightfv", [] { glGetLightfv(GL_LIGHT0, GL_AMBIENT, fv); }},
+      {"glGetLightiv", [] { glGetLightiv(GL_LIGHT0, GL_AMBIENT, iv); }},
+      {"glGetMaterialfv", [] { glGetMaterialfv(GL_FRONT, GL_AMBIENT, fv); }},
+      {"glGetMaterialiv", [] { glGetMaterialiv(GL_FRONT, GL_AMBIENT, iv); }},
+      {"glLightModelf", [] { glLightModelf(GL_LIGHT_MODEL_TWO_SIDE, 1); }},
+      {"glLightModeli", [] { glLightModeli(GL_LIGHT_MODEL_TWO_SIDE, 1); }},
+      {"glLightModelfv", [] { glLightModelfv(GL_LIGHT_MODEL_AMBIENT, fv); }},
+      {"glLightModeliv", [] { glLightModeliv(GL_LIGHT_MODEL_AMBIENT, iv); }},
+      {"glColorMaterial", [] { glColorMaterial(GL_FRONT, GL_DIFFUSE); }},
+      {"glSecondaryColorPointer", [] { glSecondaryColorPointer(3, GL_FLOAT, 0, nullptr); }},
+      {"glScissor", [] { glScissor(0, 0, 4, 4); }},
+      {"glAlphaFunc", [] { glAlphaFunc(GL_LESS, 0.5f); }},
+      {"glStencilFunc", [] { glStencilFunc(GL_LESS, 1, 0xff); }},
+      {"glStencilOp", [] { glStencilOp(GL_KEEP, GL_KEEP, GL_INCR); }},
+      {"glStencilMask", [] { glStencilMask(0x0f); }},
+      {"glLogicOp", [] { glLogicOp(GL_XOR); }},
+      {"glDrawBuffer", [] { glDrawBuffer(GL_FRONT); }},
+      {"glReadBuffer", [] { glReadBuffer(GL_FRONT); }},
   };
 }
 
 class Errors : public GLTest {};
 
+// Every exported command is either in the list above or allowed between Begin and End
+// (GL 2.1 §2.6.3: vertex attributes, EdgeFlag, Material, ArrayElement, CallList(s)).
 TEST_F(Errors, EveryCommandIllegalInsideBeginEndGivesInvalidOperation) {
   for (const Call& c : illegal_inside_begin_end()) {
     glBegin(GL_TRIANGLES);
@@ -153,9 +177,9 @@ TEST_F(Errors, StateIsUnchangedByIllegalCallsInsideBeginEnd) {
 }
 
 TEST_F(Errors, FirstErrorWins) {
-  glEnable(0x1234);                  // INVALID_ENUM
-  glViewport(0, 0, -1, 1);           // INVALID_VALUE
-  glPopMatrix();                     // STACK_UNDERFLOW
+  glEnable(0x1234);        // INVALID_ENUM
+  glViewport(0, 0, -1, 1); // INVALID_VALUE
+  glPopMatrix();           // STACK_UNDERFLOW
   EXPECT_EQ(glGetError(), static_cast<GLenum>(GL_INVALID_ENUM));
   EXPECT_EQ(glGetError(), static_cast<GLenum>(GL_NO_ERROR));
 }
@@ -226,8 +250,7 @@ TEST_F(Errors, InvalidArguments) {
       {[] { glDrawArrays(GL_TRIANGLES, 0, -1); }, GL_INVALID_VALUE},
       {[&] { glDrawElements(GL_TRIANGLES, 3, GL_FLOAT, px); }, GL_INVALID_ENUM},
       {[&] { glDrawElements(GL_TRIANGLES, -3, GL_UNSIGNED_BYTE, px); }, GL_INVALID_VALUE},
-      {[&] { glDrawRangeElements(GL_TRIANGLES, 5, 2, 3, GL_UNSIGNED_BYTE, px); },
-       GL_INVALID_VALUE},
+      {[&] { glDrawRangeElements(GL_TRIANGLES, 5, 2, 3, GL_UNSIGNED_BYTE, px); }, GL_INVALID_VALUE},
       {[] { glMultiDrawArrays(GL_TRIANGLES, nullptr, nullptr, -1); }, GL_INVALID_VALUE},
       {[] { glInterleavedArrays(GL_RGBA, 0, nullptr); }, GL_INVALID_ENUM},
       {[] { glPopClientAttrib(); }, GL_STACK_UNDERFLOW},

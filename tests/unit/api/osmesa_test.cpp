@@ -60,8 +60,8 @@ TEST(OSMesa, CreationVariants) {
   EXPECT_EQ(OSMesaCreateContextExt(OSMESA_COLOR_INDEX, 16, 0, 0, nullptr), nullptr);
   const int core[] = {OSMESA_PROFILE, OSMESA_CORE_PROFILE, 0};
   EXPECT_EQ(OSMesaCreateContextAttribs(core, nullptr), nullptr);
-  const int attribs[] = {OSMESA_FORMAT, OSMESA_BGRA, OSMESA_DEPTH_BITS, 32,
-                         OSMESA_STENCIL_BITS, 8, 0};
+  const int attribs[] = {
+      OSMESA_FORMAT, OSMESA_BGRA, OSMESA_DEPTH_BITS, 32, OSMESA_STENCIL_BITS, 8, 0};
   OSMesaContext c = OSMesaCreateContextAttribs(attribs, nullptr);
   ASSERT_NE(c, nullptr);
   std::vector<uint8_t> buf(8 * 8 * 4);
@@ -145,7 +145,8 @@ TEST_F(Render, FullWindowTriangleAndReadPixels) {
   glVertex2f(-1, 3);
   glEnd();
   for (int y = 0; y < kH; ++y)
-    for (int x = 0; x < kW; ++x) ASSERT_EQ(pixel(x, y), 0xff00ff00u) << x << "," << y;
+    for (int x = 0; x < kW; ++x)
+      ASSERT_EQ(pixel(x, y), 0xff00ff00u) << x << "," << y;
   uint8_t rgba[4];
   glReadPixels(5, 6, 1, 1, GL_RGBA, GL_UNSIGNED_BYTE, rgba);
   EXPECT_EQ(rgba[1], 255);

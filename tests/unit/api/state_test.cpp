@@ -50,12 +50,14 @@ TEST_F(State, InitialValues) {
   EXPECT_EQ(pm[1], GL_FILL);
   GLboolean cm[4];
   glGetBooleanv(GL_COLOR_WRITEMASK, cm);
-  for (GLboolean b : cm) EXPECT_EQ(b, GL_TRUE);
+  for (GLboolean b : cm)
+    EXPECT_EQ(b, GL_TRUE);
   EXPECT_EQ(glIsEnabled(GL_DITHER), GL_TRUE);
   EXPECT_EQ(glIsEnabled(GL_DEPTH_TEST), GL_FALSE);
   GLfloat c[4];
   glGetFloatv(GL_CURRENT_COLOR, c);
-  for (GLfloat f : c) EXPECT_EQ(f, 1.0f);
+  for (GLfloat f : c)
+    EXPECT_EQ(f, 1.0f);
   GLdouble dr[2];
   glGetDoublev(GL_DEPTH_RANGE, dr);
   EXPECT_EQ(dr[0], 0.0);
@@ -152,7 +154,8 @@ void expect_matrix(GLenum pname, const glm::mat4& ref) {
   GLfloat m[16];
   glGetFloatv(pname, m);
   const float* r = glm::value_ptr(ref);
-  for (int i = 0; i < 16; ++i) EXPECT_NEAR(m[i], r[i], 1e-5f) << "element " << i;
+  for (int i = 0; i < 16; ++i)
+    EXPECT_NEAR(m[i], r[i], 1e-5f) << "element " << i;
 }
 
 TEST_F(State, MatricesMatchReference) {
@@ -186,20 +189,23 @@ TEST_F(State, MatricesMatchReference) {
   glLoadMatrixd(cols);
   glMultMatrixd(cols);
   glm::mat4 c(1.0f);
-  for (int i = 0; i < 16; ++i) glm::value_ptr(c)[i] = static_cast<float>(cols[i]);
+  for (int i = 0; i < 16; ++i)
+    glm::value_ptr(c)[i] = static_cast<float>(cols[i]);
   expect_matrix(GL_PROJECTION_MATRIX, c * c);
 }
 
 TEST_F(State, StackLimits) {
   const GLint depth = geti(GL_MAX_MODELVIEW_STACK_DEPTH);
-  for (GLint i = 1; i < depth; ++i) glPushMatrix();
+  for (GLint i = 1; i < depth; ++i)
+    glPushMatrix();
   EXPECT_EQ(glGetError(), static_cast<GLenum>(GL_NO_ERROR));
   EXPECT_EQ(geti(GL_MODELVIEW_STACK_DEPTH), depth);
   glTranslatef(5, 0, 0);
   glPushMatrix();
   EXPECT_EQ(glGetError(), static_cast<GLenum>(GL_STACK_OVERFLOW));
   EXPECT_EQ(geti(GL_MODELVIEW_STACK_DEPTH), depth);
-  for (GLint i = 1; i < depth; ++i) glPopMatrix();
+  for (GLint i = 1; i < depth; ++i)
+    glPopMatrix();
   EXPECT_EQ(glGetError(), static_cast<GLenum>(GL_NO_ERROR));
   glPopMatrix();
   EXPECT_EQ(glGetError(), static_cast<GLenum>(GL_STACK_UNDERFLOW));
@@ -209,7 +215,8 @@ TEST_F(State, StackLimits) {
 
   glMatrixMode(GL_PROJECTION);
   const GLint pdepth = geti(GL_MAX_PROJECTION_STACK_DEPTH);
-  for (GLint i = 1; i < pdepth; ++i) glPushMatrix();
+  for (GLint i = 1; i < pdepth; ++i)
+    glPushMatrix();
   glPushMatrix();
   EXPECT_EQ(glGetError(), static_cast<GLenum>(GL_STACK_OVERFLOW));
 }

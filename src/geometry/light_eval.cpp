@@ -1,0 +1,239 @@
+// The GL 2.1 §2.14.1 lighting equation, evaluated in float per vertex as llvmpipe's
+// fixed-function vertex program does, with everything that does not depend on the vertex
+// computed once per draw by setup_lighting.
+#include "geometry/light_eval.h"
+
+#include <cmath>
+
+#include <glm/mat3x3.hpp>
+#include <glm/matrix.hpp>
+
+#include "geometry/vertex.h"
+
+namespace pineda {
+
+namespace {
+
+inline float dot3(const float* a, const float* b) {
+  return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
+}
+
+// Scale v to unit length; a zero vector stays zero.
+inline void normalize3(float* v) {
+  const float len2 = dot3(v, v);
+  if (len2 > 0.0f) {
+    const float inv = 1.0f / std::sqrt(len2);
+    v[0] *= inv, v[1] *= inv, v[2] *= inv;
+  }
+}
+
+inline float clamp01(float v) { return v > 0.0f ? (v < 1.0f ? v : 1.0f) : 0.0f; }
+
+// The geometric terms of one light at one vertex, shared by both faces.
+struct LightTerms {
+  float scale;  // att_i * spot_i
+  float n_dot_vp; // n . VPpli, unclamped (the back face uses its negation)
+  float n_dot_h;  // n . h_i (unit h), unclamped
+};
+
+// (n . h)^srm for a clamped n . h, with 0^0 = 1 as pow gives.
+inline float spec_power(float n_dot_h, float shininess) {
+  return std::pow(n_dot_h > 0.0f ? n_dot_h : 0.0f, shininess);
+}
+
+// c_pri and c_sec of one face: `sign` is +1 for the front (n) and -1 for the back (-n).
+void shade_face(const LightSetup& s, const Material& m, const LightTerms* terms, float sign,
+                float* pri, float* sec) {
+  // e_cm + a_cm * a_cs
+  for (int c = 0; c < 3; ++c) {
+    pri[c] = m.emission[c] + m.ambient[c] * s.scene_ambient[c];
+    sec[c] = 0.0f;
+  }
+  for (int i = 0; i < s.count; ++i) {
+    const LightConstants& l = s.light[i];
+    const LightTerms& t = terms[i];
+    if (t.scale == 0.0f) continue;
+    const float ndl = sign * t.n_dot_vp;
+    float dif = 0.0f, spe = 0.0f;
+    if (ndl > 0.0f) { // f_i = 1 exactly when n . VPpli is positive (eq. 2.2)
+      dif = ndl;
+      spe = spec_power(sign * t.n_dot_h, m.shininess);
+    }
+    for (int c = 0; c < 3; ++c) {
+      const float amb_dif = m.ambient[c] * l.ambient[c] + dif * m.diffuse[c] * l.diffuse[c];
+      const float spec = spe * m.specular[c] * l.specular[c];
+      if (s.separate_specular) {
+        pri[c] += t.scale * amb_dif;
+        sec[c] += t.scale * spec;
+      } else {
+        pri[c] += t.scale * (amb_dif + spec);
+      }
+    }
+  }
+  // §2.14.1: A is the alpha of d_cm; the secondary alpha is 1. §2.14.6 clamps both colours.
+  for (int c = 0; c < 3; ++c) {
+    pri[c] = clamp01(pri[c]);
+    sec[c] = clamp01(sec[c]);
+  }
+  pri[3] = clamp01(m.diffuse[3]);
+  sec[3] = 1.0f;
+}
+
+} // namespace
+
+void setup_lighting(LightSetup& s, const LightingState& ls, const glm::mat4& modelview,
+                    bool normalize, bool rescale) {
+  s.count = 0;
+  s.local_viewer = ls.local_viewer;
+  s.two_side = ls.two_side;
+  s.separate_specular = ls.color_control == GL_SEPARATE_SPECULAR_COLOR;
+  s.need_eye_position = ls.local_viewer;
+  for (int c = 0; c < 4; ++c) s.scene_ambient[c] = ls.model_ambient[c];
+  for (int i = 0; i < kMaxLights; ++i) {
+    const Light& src = ls.light[i];
+    if (!src.enabled) continue;
+    LightConstants& l = s.light[s.count++];
+    for (int c = 0; c < 3; ++c) {
+      l.ambient[c] = src.ambient[c];
+      l.diffuse[c] = src.diffuse[c];
+      l.specular[c] = src.specular[c];
+    }
+    const float w = src.position[3];
+    l.positional = w != 0.0f;
+    if (l.positional) {
+      // The vector from a vertex to the light is between two points (§2.14.1), so the
+      // homogeneous position is projected first.
+      for (int c = 0; c < 3; ++c) l.position[c] = src.position[c] / w;
+      s.need_eye_position = true;
+    } else {
+      for (int c = 0; c < 3; ++c) l.direction[c] = src.position[c];
+      normalize3(l.direction);
+      // Eq. 2.3 with an infinite viewer: h = VPpli + (0, 0, 1), the same for every vertex.
+      l.half[0] = l.direction[0];
+      l.half[1] = l.direction[1];
+      l.half[2] = l.direction[2] + 1.0f;
+      normalize3(l.half);
+    }
+    l.spot = src.spot_cutoff != 180.0f;
+    for (int c = 0; c < 3; ++c) l.spot_direction[c] = src.spot_direction[c];
+    normalize3(l.spot_direction);
+    l.spot_cos = static_cast<float>(std::cos(src.spot_cutoff * (3.14159265358979323846 / 180.0)));
+    l.spot_exponent = src.spot_exponent;
+    l.spot_factor = 1.0f;
+    if (l.spot && !l.positional) {
+      // Eq. 2.5 for a light at infinity: PpliV is -VPpli for every vertex.
+      const float d = -dot3(l.direction, l.spot_direction);
+      l.spot_factor = d >= l.spot_cos ? std::pow(d, l.spot_exponent) : 0.0f;
+    }
+    // Eq. 2.4: attenuation applies to positional lights only.
+    for (int c = 0; c < 3; ++c) l.k[c] = src.attenuation[c];
+    l.attenuated = l.positional && (l.k[0] != 1.0f || l.k[1] != 0.0f || l.k[2] != 0.0f);
+  }
+
+  // COLOR_MATERIAL (§2.14.3).
+  const GLenum mode = ls.color_material_mode;
+  const GLenum face = ls.color_material_face;
+  s.track[0] = ls.color_material && face != GL_BACK;
+  s.track[1] = ls.color_material && face != GL_FRONT;
+  s.track_ambient = mode == GL_AMBIENT || mode == GL_AMBIENT_AND_DIFFUSE;
+  s.track_diffuse = mode == GL_DIFFUSE || mode == GL_AMBIENT_AND_DIFFUSE;
+  s.track_specular = mode == GL_SPECULAR;
+  s.track_emission = mode == GL_EMISSION;
+
+  // §2.11.3: normals go to eye space by the inverse of the model-view's upper left 3x3
+  // (multiplying the row vector from the left); as a column-vector product that is the
+  // inverse transpose. Rescale multiplies by 1 / |third row of the inverse|; NORMALIZE makes
+  // every normal unit length after the transformation and takes precedence.
+  const glm::dmat3 inv = glm::inverse(glm::dmat3(glm::dmat4(modelview)));
+  const glm::dmat3 nm = glm::transpose(inv);
+  double f = 1.0;
+  if (rescale && !normalize) {
+    const double len2 = inv[0][2] * inv[0][2] + inv[1][2] * inv[1][2] + inv[2][2] * inv[2][2];
+    if (len2 > 0.0) f = 1.0 / std::sqrt(len2);
+  }
+  for (int col = 0; col < 3; ++col)
+    for (int row = 0; row < 3; ++row)
+      s.normal_matrix[col * 3 + row] = static_cast<float>(nm[col][row] * f);
+  s.normalize = normalize;
+  const float* mv = &modelview[0][0];
+  for (int i = 0; i < 16; ++i) s.modelview[i] = mv[i];
+}
+
+void light_vertex(const LightSetup& s, const Material* mat, const float pos[4],
+                  const float normal[3], const float color[4], float* attr) {
+  // Eye-space normal.
+  const float* nm = s.normal_matrix;
+  float n[3];
+  for (int r = 0; r < 3; ++r)
+    n[r] = nm[r] * normal[0] + nm[3 + r] * normal[1] + nm[6 + r] * normal[2];
+  if (s.normalize) normalize3(n);
+
+  // Eye-space position, needed for positional lights and the local viewer.
+  float v[3] = {0.0f, 0.0f, 0.0f};
+  if (s.need_eye_position) {
+    const float* m = s.modelview;
+    float e[4];
+    for (int r = 0; r < 4; ++r)
+      e[r] = m[r] * pos[0] + m[4 + r] * pos[1] + m[8 + r] * pos[2] + m[12 + r] * pos[3];
+    const float inv_w = e[3] != 1.0f && e[3] != 0.0f ? 1.0f / e[3] : 1.0f;
+    for (int c = 0; c < 3; ++c) v[c] = e[c] * inv_w;
+  }
+  // VPe: the unit vector from the vertex to the eye at the origin (local viewer).
+  float ve[3] = {-v[0], -v[1], -v[2]};
+  if (s.local_viewer) normalize3(ve);
+
+  LightTerms terms[kMaxLights];
+  for (int i = 0; i < s.count; ++i) {
+    const LightConstants& l = s.light[i];
+    LightTerms& t = terms[i];
+    float vp[3], h[3];
+    float scale = 1.0f;
+    if (l.positional) {
+      for (int c = 0; c < 3; ++c) vp[c] = l.position[c] - v[c];
+      const float d2 = dot3(vp, vp);
+      const float d = std::sqrt(d2);
+      if (d > 0.0f) {
+        const float inv = 1.0f / d;
+        vp[0] *= inv, vp[1] *= inv, vp[2] *= inv;
+      }
+      if (l.attenuated) scale = 1.0f / (l.k[0] + l.k[1] * d + l.k[2] * d2);
+      if (l.spot) {
+        const float sd = -dot3(vp, l.spot_direction);
+        scale *= sd >= l.spot_cos ? std::pow(sd, l.spot_exponent) : 0.0f;
+      }
+    } else {
+      for (int c = 0; c < 3; ++c) vp[c] = l.direction[c];
+      scale = l.spot_factor;
+    }
+    if (s.local_viewer) {
+      for (int c = 0; c < 3; ++c) h[c] = vp[c] + ve[c];
+      normalize3(h);
+    } else if (l.positional) {
+      h[0] = vp[0], h[1] = vp[1], h[2] = vp[2] + 1.0f;
+      normalize3(h);
+    } else {
+      h[0] = l.half[0], h[1] = l.half[1], h[2] = l.half[2];
+    }
+    t.scale = scale;
+    t.n_dot_vp = dot3(n, vp);
+    t.n_dot_h = dot3(n, h);
+  }
+
+  const int faces = s.two_side ? 2 : 1;
+  for (int f = 0; f < faces; ++f) {
+    Material m = mat[f];
+    if (s.track[f]) {
+      for (int c = 0; c < 4; ++c) {
+        if (s.track_ambient) m.ambient[c] = color[c];
+        if (s.track_diffuse) m.diffuse[c] = color[c];
+        if (s.track_specular) m.specular[c] = color[c];
+        if (s.track_emission) m.emission[c] = color[c];
+      }
+    }
+    float* pri = attr + (f == 0 ? kAttrColor : kAttrBackColor);
+    float* sec = attr + (f == 0 ? kAttrColor2 : kAttrBackColor2);
+    shade_face(s, m, terms, f == 0 ? 1.0f : -1.0f, pri, sec);
+  }
+}
+
+} // namespace pineda

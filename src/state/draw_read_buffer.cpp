@@ -1,0 +1,90 @@
+// glDrawBuffer (GL 2.1 §4.2.1) and glReadBuffer (§4.3.2): which of the context's colour
+// buffers drawing writes and glReadPixels reads. The buffers a context has are
+// Context::color_buffers, set by the window-system layer.
+#include "core/api_util.h"
+#include "dispatch.h"
+
+namespace pineda {
+
+namespace {
+
+constexpr uint32_t kFront = kColorBufferFrontLeft | kColorBufferFrontRight;
+constexpr uint32_t kBack = kColorBufferBackLeft | kColorBufferBackRight;
+constexpr uint32_t kLeft = kColorBufferFrontLeft | kColorBufferBackLeft;
+constexpr uint32_t kRight = kColorBufferFrontRight | kColorBufferBackRight;
+
+// The buffers a DrawBuffer constant indicates (GL 2.1 table 4.4). False for enums that are
+// not such constants. AUXi names an auxiliary buffer, and Pineda has none (AUX_BUFFERS is 0),
+// so it indicates no buffer the context has.
+bool draw_buffer_set(GLenum buf, uint32_t* set) {
+  switch (buf) {
+  case GL_FRONT_LEFT: *set = kColorBufferFrontLeft; return true;
+  case GL_FRONT_RIGHT: *set = kColorBufferFrontRight; return true;
+  case GL_BACK_LEFT: *set = kColorBufferBackLeft; return true;
+  case GL_BACK_RIGHT: *set = kColorBufferBackRight; return true;
+  case GL_FRONT: *set = kFront; return true;
+  case GL_BACK: *set = kBack; return true;
+  case GL_LEFT: *set = kLeft; return true;
+  case GL_RIGHT: *set = kRight; return true;
+  case GL_FRONT_AND_BACK: *set = kFront | kBack; return true;
+  case GL_AUX0:
+  case GL_AUX1:
+  case GL_AUX2:
+  case GL_AUX3: *set = 0; return true;
+  default: return false;
+  }
+}
+
+// The one buffer a ReadBuffer constant names (GL 2.1 §4.3.2): FRONT and LEFT are the front
+// left buffer, BACK the back left, RIGHT the front right. FRONT_AND_BACK and NONE are not
+// among the GL 2.1 constants.
+bool read_buffer_named(GLenum src, uint32_t* buffer) {
+  switch (src) {
+  case GL_FRONT_LEFT:
+  case GL_FRONT:
+  case GL_LEFT: *buffer = kColorBufferFrontLeft; return true;
+  case GL_FRONT_RIGHT:
+  case GL_RIGHT: *buffer = kColorBufferFrontRight; return true;
+  case GL_BACK_LEFT:
+  case GL_BACK: *buffer = kColorBufferBackLeft; return true;
+  case GL_BACK_RIGHT: *buffer = kColorBufferBackRight; return true;
+  case GL_AUX0:
+  case GL_AUX1:
+  case GL_AUX2:
+  case GL_AUX3: *buffer = 0; return true;
+  default: return false;
+  }
+}
+
+} // namespace
+
+namespace exec {
+
+void GLAPIENTRY DrawBuffer(GLenum buf) {
+  PINEDA_CTX_OUTSIDE("glDrawBuffer");
+  if (buf != GL_NONE) {
+    uint32_t set = 0;
+    if (!draw_buffer_set(buf, &set))
+      return record_error(ctx, GL_INVALID_ENUM, "glDrawBuffer", buf);
+    // GL 2.1 §4.2.1: a constant other than NONE that indicates none of the context's colour
+    // buffers is INVALID_OPERATION.
+    if ((set & ctx->color_buffers) == 0)
+      return record_error(ctx, GL_INVALID_OPERATION, "glDrawBuffer", buf);
+  }
+  ctx->draw_buffer = buf;
+  mark_dirty(ctx, kDirtyFragment);
+}
+
+void GLAPIENTRY ReadBuffer(GLenum src) {
+  PINEDA_CTX_OUTSIDE("glReadBuffer");
+  uint32_t buffer = 0;
+  if (!read_buffer_named(src, &buffer))
+    return record_error(ctx, GL_INVALID_ENUM, "glReadBuffer", src);
+  // GL 2.1 §4.3.2: a missing buffer is INVALID_OPERATION.
+  if ((buffer & ctx->color_buffers) == 0)
+    return record_error(ctx, GL_INVALID_OPERATION, "glReadBuffer", src);
+  ctx->read_buffer = src;
+}
+
+} // namespace exec
+} // namespace pineda

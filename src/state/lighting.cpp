@@ -1,0 +1,431 @@
+// Lighting parameters (GL 2.1 §2.14.2), ColorMaterial (§2.14.3) and their queries
+// (§6.1.3 GetLight, GetMaterial).
+#include <cmath>
+#include <limits>
+
+#include <glm/mat3x3.hpp>
+#include <glm/vec3.hpp>
+#include <glm/vec4.hpp>
+
+#include "core/api_util.h"
+#include "dispatch.h"
+
+namespace pineda {
+
+namespace {
+
+// GL 2.1 §2.14.2: integer colour parameters convert as signed integers in Table 2.9.
+inline float int_color(GLint c) { return static_cast<float>((2.0 * c + 1.0) / 4294967295.0); }
+
+// GL 2.1 §6.1.2: colours read back as integers map [-1,1] linearly onto the integer range
+// (the same mapping glGetIntegerv uses in get.cpp).
+GLint color_to_int(float c) {
+  const double scaled = static_cast<double>(c) * 2147483647.0;
+  if (scaled >= 2147483647.0) return std::numeric_limits<GLint>::max();
+  if (scaled <= -2147483648.0) return std::numeric_limits<GLint>::min();
+  return static_cast<GLint>(std::llround(scaled));
+}
+
+// Other values read back as integers are rounded to the nearest integer (§6.1.2).
+GLint float_to_int(float v) {
+  if (!(v == v)) return 0;
+  if (v >= 2147483647.0f) return std::numeric_limits<GLint>::max();
+  if (v <= -2147483648.0f) return std::numeric_limits<GLint>::min();
+  return static_cast<GLint>(std::lround(v));
+}
+
+// The number of values of a Light parameter (Table 2.11), 0 for an unknown pname.
+int light_param_count(GLenum pname) {
+  switch (pname) {
+  case GL_AMBIENT:
+  case GL_DIFFUSE:
+  case GL_SPECULAR:
+  case GL_POSITION: return 4;
+  case GL_SPOT_DIRECTION: return 3;
+  case GL_SPOT_EXPONENT:
+  case GL_SPOT_CUTOFF:
+  case GL_CONSTANT_ATTENUATION:
+  case GL_LINEAR_ATTENUATION:
+  case GL_QUADRATIC_ATTENUATION: return 1;
+  default: return 0;
+  }
+}
+
+bool is_light_color(GLenum pname) {
+  return pname == GL_AMBIENT || pname == GL_DIFFUSE || pname == GL_SPECULAR;
+}
+
+int material_param_count(GLenum pname) {
+  switch (pname) {
+  case GL_AMBIENT:
+  case GL_DIFFUSE:
+  case GL_SPECULAR:
+  case GL_EMISSION:
+  case GL_AMBIENT_AND_DIFFUSE: return 4;
+  case GL_COLOR_INDEXES: return 3;
+  case GL_SHININESS: return 1;
+  default: return 0;
+  }
+}
+
+bool is_material_color(GLenum pname) {
+  return pname == GL_AMBIENT || pname == GL_DIFFUSE || pname == GL_SPECULAR ||
+         pname == GL_EMISSION || pname == GL_AMBIENT_AND_DIFFUSE;
+}
+
+// Which faces a ColorMaterial / Material face argument names: bit 0 front, bit 1 back.
+int face_mask(GLenum face) {
+  switch (face) {
+  case GL_FRONT: return 1;
+  case GL_BACK: return 2;
+  case GL_FRONT_AND_BACK: return 3;
+  default: return 0;
+  }
+}
+
+bool valid_color_material_mode(GLenum mode) {
+  return mode == GL_EMISSION || mode == GL_AMBIENT || mode == GL_DIFFUSE ||
+         mode == GL_SPECULAR || mode == GL_AMBIENT_AND_DIFFUSE;
+}
+
+// Whether material property `pname` currently tracks the colour on the faces in `faces`
+// (GL 2.1 §2.14.3), as a face mask.
+int tracked_faces(const LightingState& ls, GLenum pname) {
+  if (!ls.color_material) return 0;
+  const GLenum mode = ls.color_material_mode;
+  const bool tracked = mode == pname || (mode == GL_AMBIENT_AND_DIFFUSE &&
+                                         (pname == GL_AMBIENT || pname == GL_DIFFUSE));
+  return tracked ? face_mask(ls.color_material_face) : 0;
+}
+
+void copy4(float* dst, const float* src) {
+  for (int i = 0; i < 4; ++i) dst[i] = src[i];
+}
+
+// Store one material parameter into the faces of `faces` (already validated).
+void store_material(LightingState& ls, int faces, GLenum pname, const float* v) {
+  for (int f = 0; f < 2; ++f) {
+    if (!(faces & (1 << f))) continue;
+    Material& m = ls.material[f];
+    // GL 2.1 §2.14.3: while COLOR_MATERIAL is enabled the tracked properties always follow
+    // the current colour, so a Material call does not override them.
+    const int tracked_amb = tracked_faces(ls, GL_AMBIENT) & (1 << f);
+    const int tracked_dif = tracked_faces(ls, GL_DIFFUSE) & (1 << f);
+    switch (pname) {
+    case GL_AMBIENT:
+      if (!tracked_amb) copy4(m.ambient, v);
+      break;
+    case GL_DIFFUSE:
+      if (!tracked_dif) copy4(m.diffuse, v);
+      break;
+    case GL_AMBIENT_AND_DIFFUSE:
+      if (!tracked_amb) copy4(m.ambient, v);
+      if (!tracked_dif) copy4(m.diffuse, v);
+      break;
+    case GL_SPECULAR:
+      if (!(tracked_faces(ls, GL_SPECULAR) & (1 << f))) copy4(m.specular, v);
+      break;
+    case GL_EMISSION:
+      if (!(tracked_faces(ls, GL_EMISSION) & (1 << f))) copy4(m.emission, v);
+      break;
+    case GL_SHININESS: m.shininess = v[0]; break;
+    default:
+      for (int i = 0; i < 3; ++i) m.color_indexes[i] = v[i];
+      break;
+    }
+  }
+}
+
+// Common body of glLight*: `v` holds the parameter's values already converted to float.
+void set_light(Context* ctx, const char* func, GLenum light, GLenum pname, const float* v) {
+  if (light < GL_LIGHT0 || light >= GL_LIGHT0 + kMaxLights) {
+    record_error(ctx, GL_INVALID_ENUM, func, light);
+    return;
+  }
+  Light& l = ctx->lighting.light[light - GL_LIGHT0];
+  // GL 2.1 Table 2.10: the allowed ranges; INVALID_VALUE outside them (§2.14.2). The tests
+  // are written so that NaN fails them.
+  switch (pname) {
+  case GL_AMBIENT: copy4(l.ambient, v); break;
+  case GL_DIFFUSE: copy4(l.diffuse, v); break;
+  case GL_SPECULAR: copy4(l.specular, v); break;
+  case GL_POSITION: {
+    // §2.14.2: the position is transformed by the model-view matrix when it is specified.
+    const glm::vec4 p = ctx->modelview.top() * glm::vec4(v[0], v[1], v[2], v[3]);
+    for (int i = 0; i < 4; ++i) l.position[i] = p[i];
+    break;
+  }
+  case GL_SPOT_DIRECTION: {
+    // §2.14.2: the spot direction is transformed by the upper left 3x3 only.
+    const glm::vec3 d = glm::mat3(ctx->modelview.top()) * glm::vec3(v[0], v[1], v[2]);
+    for (int i = 0; i < 3; ++i) l.spot_direction[i] = d[i];
+    break;
+  }
+  case GL_SPOT_EXPONENT:
+    if (!(v[0] >= 0.0f && v[0] <= 128.0f)) return record_error(ctx, GL_INVALID_VALUE, func);
+    l.spot_exponent = v[0];
+    break;
+  case GL_SPOT_CUTOFF:
+    if (!((v[0] >= 0.0f && v[0] <= 90.0f) || v[0] == 180.0f))
+      return record_error(ctx, GL_INVALID_VALUE, func);
+    l.spot_cutoff = v[0];
+    break;
+  case GL_CONSTANT_ATTENUATION:
+  case GL_LINEAR_ATTENUATION:
+  case GL_QUADRATIC_ATTENUATION:
+    if (!(v[0] >= 0.0f)) return record_error(ctx, GL_INVALID_VALUE, func);
+    l.attenuation[pname - GL_CONSTANT_ATTENUATION] = v[0];
+    break;
+  default: return record_error(ctx, GL_INVALID_ENUM, func, pname);
+  }
+  mark_dirty(ctx, kDirtyLighting);
+}
+
+void light_scalar(const char* func, GLenum light, GLenum pname, float value) {
+  PINEDA_CTX_OUTSIDE(func);
+  // §2.14.2: the non-vector form with a multi-valued parameter is INVALID_ENUM.
+  if (light_param_count(pname) != 1 && light >= GL_LIGHT0 && light < GL_LIGHT0 + kMaxLights)
+    return record_error(ctx, GL_INVALID_ENUM, func, pname);
+  set_light(ctx, func, light, pname, &value);
+}
+
+void set_material(Context* ctx, const char* func, GLenum face, GLenum pname, const float* v) {
+  const int faces = face_mask(face);
+  if (faces == 0) return record_error(ctx, GL_INVALID_ENUM, func, face);
+  if (material_param_count(pname) == 0) return record_error(ctx, GL_INVALID_ENUM, func, pname);
+  if (pname == GL_SHININESS && !(v[0] >= 0.0f && v[0] <= 128.0f))
+    return record_error(ctx, GL_INVALID_VALUE, func);
+  LightingState& ls = ctx->lighting;
+  if (ctx->begin_mode != kOutsideBeginEnd) {
+    // §2.14.2: Material is legal between Begin and End and applies to the vertices that
+    // follow; remember where in the primitive the material changed.
+    if (ls.imm_changes.empty()) {
+      ls.begin_material[0] = ls.material[0];
+      ls.begin_material[1] = ls.material[1];
+    }
+    store_material(ls, faces, pname, v);
+    MaterialChange& c = ls.imm_changes.emplace_back();
+    c.vertex = ctx->imm.size();
+    c.material[0] = ls.material[0];
+    c.material[1] = ls.material[1];
+  } else {
+    store_material(ls, faces, pname, v);
+  }
+  mark_dirty(ctx, kDirtyLighting);
+}
+
+void material_scalar(const char* func, GLenum face, GLenum pname, float value) {
+  Context* ctx = current_context();
+  if (ctx == nullptr) return;
+  if (material_param_count(pname) != 1 && face_mask(face) != 0)
+    return record_error(ctx, GL_INVALID_ENUM, func, pname);
+  set_material(ctx, func, face, pname, &value);
+}
+
+void set_light_model(Context* ctx, const char* func, GLenum pname, const float* v) {
+  LightingState& ls = ctx->lighting;
+  switch (pname) {
+  case GL_LIGHT_MODEL_AMBIENT: copy4(ls.model_ambient, v); break;
+  case GL_LIGHT_MODEL_LOCAL_VIEWER: ls.local_viewer = v[0] != 0.0f; break;
+  case GL_LIGHT_MODEL_TWO_SIDE: ls.two_side = v[0] != 0.0f; break;
+  case GL_LIGHT_MODEL_COLOR_CONTROL: {
+    const auto mode = static_cast<GLenum>(v[0]);
+    if (static_cast<float>(mode) != v[0] ||
+        (mode != GL_SINGLE_COLOR && mode != GL_SEPARATE_SPECULAR_COLOR))
+      return record_error(ctx, GL_INVALID_ENUM, func, mode);
+    ls.color_control = mode;
+    break;
+  }
+  default: return record_error(ctx, GL_INVALID_ENUM, func, pname);
+  }
+  mark_dirty(ctx, kDirtyLighting);
+}
+
+void light_model_scalar(const char* func, GLenum pname, float value) {
+  PINEDA_CTX_OUTSIDE(func);
+  if (pname == GL_LIGHT_MODEL_AMBIENT) return record_error(ctx, GL_INVALID_ENUM, func, pname);
+  set_light_model(ctx, func, pname, &value);
+}
+
+// Values of a GetLight query; false for an unknown light or pname (recorded).
+bool get_light(Context* ctx, const char* func, GLenum light, GLenum pname, float* out, int* n) {
+  if (light < GL_LIGHT0 || light >= GL_LIGHT0 + kMaxLights) {
+    record_error(ctx, GL_INVALID_ENUM, func, light);
+    return false;
+  }
+  const Light& l = ctx->lighting.light[light - GL_LIGHT0];
+  *n = light_param_count(pname);
+  switch (pname) {
+  case GL_AMBIENT: copy4(out, l.ambient); return true;
+  case GL_DIFFUSE: copy4(out, l.diffuse); return true;
+  case GL_SPECULAR: copy4(out, l.specular); return true;
+  case GL_POSITION: copy4(out, l.position); return true;
+  case GL_SPOT_DIRECTION:
+    for (int i = 0; i < 3; ++i) out[i] = l.spot_direction[i];
+    return true;
+  case GL_SPOT_EXPONENT: out[0] = l.spot_exponent; return true;
+  case GL_SPOT_CUTOFF: out[0] = l.spot_cutoff; return true;
+  case GL_CONSTANT_ATTENUATION:
+  case GL_LINEAR_ATTENUATION:
+  case GL_QUADRATIC_ATTENUATION:
+    out[0] = l.attenuation[pname - GL_CONSTANT_ATTENUATION];
+    return true;
+  default: record_error(ctx, GL_INVALID_ENUM, func, pname); return false;
+  }
+}
+
+// GL 2.1 §6.1.3: GetMaterial takes FRONT or BACK, and AMBIENT_AND_DIFFUSE is not a query.
+bool get_material(Context* ctx, const char* func, GLenum face, GLenum pname, float* out, int* n) {
+  if (face != GL_FRONT && face != GL_BACK) {
+    record_error(ctx, GL_INVALID_ENUM, func, face);
+    return false;
+  }
+  const Material& m = ctx->lighting.material[face == GL_FRONT ? 0 : 1];
+  *n = material_param_count(pname);
+  switch (pname) {
+  case GL_AMBIENT: copy4(out, m.ambient); return true;
+  case GL_DIFFUSE: copy4(out, m.diffuse); return true;
+  case GL_SPECULAR: copy4(out, m.specular); return true;
+  case GL_EMISSION: copy4(out, m.emission); return true;
+  case GL_SHININESS: out[0] = m.shininess; return true;
+  case GL_COLOR_INDEXES:
+    for (int i = 0; i < 3; ++i) out[i] = m.color_indexes[i];
+    return true;
+  default: record_error(ctx, GL_INVALID_ENUM, func, pname); return false;
+  }
+}
+
+} // namespace
+
+void update_color_material(Context* ctx) {
+  LightingState& ls = ctx->lighting;
+  if (!ls.color_material) return;
+  const int faces = face_mask(ls.color_material_face);
+  for (int f = 0; f < 2; ++f) {
+    if (!(faces & (1 << f))) continue;
+    Material& m = ls.material[f];
+    switch (ls.color_material_mode) {
+    case GL_AMBIENT: copy4(m.ambient, ctx->cur_color); break;
+    case GL_DIFFUSE: copy4(m.diffuse, ctx->cur_color); break;
+    case GL_SPECULAR: copy4(m.specular, ctx->cur_color); break;
+    case GL_EMISSION: copy4(m.emission, ctx->cur_color); break;
+    default:
+      copy4(m.ambient, ctx->cur_color);
+      copy4(m.diffuse, ctx->cur_color);
+      break;
+    }
+  }
+}
+
+namespace exec {
+
+void GLAPIENTRY Lightf(GLenum light, GLenum pname, GLfloat param) {
+  light_scalar("glLightf", light, pname, param);
+}
+void GLAPIENTRY Lighti(GLenum light, GLenum pname, GLint param) {
+  light_scalar("glLighti", light, pname, static_cast<float>(param));
+}
+void GLAPIENTRY Lightfv(GLenum light, GLenum pname, const GLfloat* params) {
+  PINEDA_CTX_OUTSIDE("glLightfv");
+  if (params == nullptr) return;
+  set_light(ctx, "glLightfv", light, pname, params);
+}
+void GLAPIENTRY Lightiv(GLenum light, GLenum pname, const GLint* params) {
+  PINEDA_CTX_OUTSIDE("glLightiv");
+  if (params == nullptr) return;
+  float v[4] = {0, 0, 0, 0};
+  const int n = light_param_count(pname);
+  for (int i = 0; i < n; ++i)
+    v[i] = is_light_color(pname) ? int_color(params[i]) : static_cast<float>(params[i]);
+  set_light(ctx, "glLightiv", light, pname, v);
+}
+
+void GLAPIENTRY Materialf(GLenum face, GLenum pname, GLfloat param) {
+  material_scalar("glMaterialf", face, pname, param);
+}
+void GLAPIENTRY Materiali(GLenum face, GLenum pname, GLint param) {
+  material_scalar("glMateriali", face, pname, static_cast<float>(param));
+}
+void GLAPIENTRY Materialfv(GLenum face, GLenum pname, const GLfloat* params) {
+  Context* ctx = current_context();
+  if (ctx == nullptr || params == nullptr) return;
+  set_material(ctx, "glMaterialfv", face, pname, params);
+}
+void GLAPIENTRY Materialiv(GLenum face, GLenum pname, const GLint* params) {
+  Context* ctx = current_context();
+  if (ctx == nullptr || params == nullptr) return;
+  float v[4] = {0, 0, 0, 0};
+  const int n = material_param_count(pname);
+  for (int i = 0; i < n; ++i)
+    v[i] = is_material_color(pname) ? int_color(params[i]) : static_cast<float>(params[i]);
+  set_material(ctx, "glMaterialiv", face, pname, v);
+}
+
+void GLAPIENTRY LightModelf(GLenum pname, GLfloat param) {
+  light_model_scalar("glLightModelf", pname, param);
+}
+void GLAPIENTRY LightModeli(GLenum pname, GLint param) {
+  light_model_scalar("glLightModeli", pname, static_cast<float>(param));
+}
+void GLAPIENTRY LightModelfv(GLenum pname, const GLfloat* params) {
+  PINEDA_CTX_OUTSIDE("glLightModelfv");
+  if (params == nullptr) return;
+  set_light_model(ctx, "glLightModelfv", pname, params);
+}
+void GLAPIENTRY LightModeliv(GLenum pname, const GLint* params) {
+  PINEDA_CTX_OUTSIDE("glLightModeliv");
+  if (params == nullptr) return;
+  float v[4] = {static_cast<float>(params[0]), 0, 0, 0};
+  if (pname == GL_LIGHT_MODEL_AMBIENT)
+    for (int i = 0; i < 4; ++i) v[i] = int_color(params[i]);
+  set_light_model(ctx, "glLightModeliv", pname, v);
+}
+
+void GLAPIENTRY ColorMaterial(GLenum face, GLenum mode) {
+  PINEDA_CTX_OUTSIDE("glColorMaterial");
+  if (face_mask(face) == 0) return record_error(ctx, GL_INVALID_ENUM, "glColorMaterial", face);
+  if (!valid_color_material_mode(mode))
+    return record_error(ctx, GL_INVALID_ENUM, "glColorMaterial", mode);
+  LightingState& ls = ctx->lighting;
+  ls.color_material_face = face;
+  ls.color_material_mode = mode;
+  // §2.14.3: with COLOR_MATERIAL enabled the newly selected properties take the current
+  // colour at once.
+  update_color_material(ctx);
+  mark_dirty(ctx, kDirtyLighting);
+}
+
+void GLAPIENTRY GetLightfv(GLenum light, GLenum pname, GLfloat* params) {
+  PINEDA_CTX_OUTSIDE("glGetLightfv");
+  float v[4];
+  int n = 0;
+  if (!get_light(ctx, "glGetLightfv", light, pname, v, &n) || params == nullptr) return;
+  for (int i = 0; i < n; ++i) params[i] = v[i];
+}
+void GLAPIENTRY GetLightiv(GLenum light, GLenum pname, GLint* params) {
+  PINEDA_CTX_OUTSIDE("glGetLightiv");
+  float v[4];
+  int n = 0;
+  if (!get_light(ctx, "glGetLightiv", light, pname, v, &n) || params == nullptr) return;
+  for (int i = 0; i < n; ++i)
+    params[i] = is_light_color(pname) ? color_to_int(v[i]) : float_to_int(v[i]);
+}
+
+void GLAPIENTRY GetMaterialfv(GLenum face, GLenum pname, GLfloat* params) {
+  PINEDA_CTX_OUTSIDE("glGetMaterialfv");
+  float v[4];
+  int n = 0;
+  if (!get_material(ctx, "glGetMaterialfv", face, pname, v, &n) || params == nullptr) return;
+  for (int i = 0; i < n; ++i) params[i] = v[i];
+}
+void GLAPIENTRY GetMaterialiv(GLenum face, GLenum pname, GLint* params) {
+  PINEDA_CTX_OUTSIDE("glGetMaterialiv");
+  float v[4];
+  int n = 0;
+  if (!get_material(ctx, "glGetMaterialiv", face, pname, v, &n) || params == nullptr) return;
+  for (int i = 0; i < n; ++i)
+    params[i] = is_material_color(pname) ? color_to_int(v[i]) : float_to_int(v[i]);
+}
+
+} // namespace exec
+} // namespace pineda
