@@ -19,6 +19,15 @@ Panel panel(const Frame& frame, int index, int cols, int rows, int gap) {
   return p;
 }
 
+void window_projection(const Frame& frame) {
+  glViewport(0, 0, frame.width, frame.height);
+  glMatrixMode(GL_PROJECTION);
+  glLoadIdentity();
+  glOrtho(0.0, frame.width, 0.0, frame.height, -1.0, 1.0);
+  glMatrixMode(GL_MODELVIEW);
+  glLoadIdentity();
+}
+
 void clear_frame(float r, float g, float b, float a) {
   glClearColor(r, g, b, a);
   glClearDepth(1.0);

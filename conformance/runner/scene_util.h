@@ -38,6 +38,10 @@ struct Panel {
 // (GL 2.1 §2.11.1, §2.12).
 Panel panel(const Frame& frame, int index, int cols, int rows, int gap = 2);
 
+// Whole-window pixel projection, as reset_state() leaves it: viewport on the whole window,
+// glOrtho(0, w, 0, h, -1, 1), identity modelview.
+void window_projection(const Frame& frame);
+
 // Clears colour and depth (GL 2.1 §4.2.3) to the given colour and depth 1.
 void clear_frame(float r, float g, float b, float a = 1.0f);
 

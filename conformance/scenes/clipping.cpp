@@ -19,12 +19,7 @@ void color_triangle(const float v[3][3], int colour) {
 // Frame of a viewport region in window pixels, drawn with the projection reset to the whole
 // window so that the outline itself is not clipped by the viewport under test.
 void outline(const Frame& frame, int x, int y, int w, int h) {
-  glViewport(0, 0, frame.width, frame.height);
-  glMatrixMode(GL_PROJECTION);
-  glLoadIdentity();
-  glOrtho(0.0, frame.width, 0.0, frame.height, -1.0, 1.0);
-  glMatrixMode(GL_MODELVIEW);
-  glLoadIdentity();
+  window_projection(frame);
   glColor3f(0.25f, 0.25f, 0.375f);
   glRecti(x - 2, y - 2, x + w + 2, y);
   glRecti(x - 2, y + h, x + w + 2, y + h + 2);

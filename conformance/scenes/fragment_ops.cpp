@@ -27,16 +27,6 @@ void fragment_defaults() {
   glLogicOp(GL_COPY);
 }
 
-// Whole-window pixel projection, as reset_state() leaves it.
-void window_projection(const Frame& frame) {
-  glViewport(0, 0, frame.width, frame.height);
-  glMatrixMode(GL_PROJECTION);
-  glLoadIdentity();
-  glOrtho(0.0, frame.width, 0.0, frame.height, -1.0, 1.0);
-  glMatrixMode(GL_MODELVIEW);
-  glLoadIdentity();
-}
-
 // Draws the stencil values of the whole window as colours (see the file comment) over a
 // black colour buffer; the depth, alpha and scissor tests and the logic op are off afterwards.
 void show_stencil(const Frame& frame) {

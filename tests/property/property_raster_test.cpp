@@ -16,30 +16,8 @@ namespace pineda {
 namespace {
 
 using test::TestFb;
+using test::ref_covers;
 using test::vtx;
-
-// Exact reference coverage of pixel (px, py) by the triangle with 1/256-pixel vertices
-// x[], y[] (setup.h's rule, restated): a centre strictly inside is covered; a centre on an
-// edge is covered when that edge, walked with the interior on its left (counter-clockwise in
-// y-up window space), runs downwards (interior at +x: a left edge) or, when horizontal,
-// rightwards (interior at +y: a bottom edge).
-bool reference_covers(const int64_t x[3], const int64_t y[3], int px, int py) {
-  const int64_t area = (x[1] - x[0]) * (y[2] - y[0]) - (y[1] - y[0]) * (x[2] - x[0]);
-  if (area == 0) return false;
-  const int64_t cx = 256 * int64_t{px} + 128, cy = 256 * int64_t{py} + 128;
-  for (int i = 0; i < 3; ++i) {
-    // Walk counter-clockwise: reverse the edge direction for clockwise input.
-    int a = i, b = (i + 1) % 3;
-    if (area < 0) std::swap(a, b);
-    const int64_t dx = x[b] - x[a], dy = y[b] - y[a];
-    const int64_t side = dx * (cy - y[a]) - dy * (cx - x[a]); // > 0: left of a->b (inside)
-    if (side > 0) continue;
-    if (side < 0) return false;
-    const bool owner = dy < 0 || (dy == 0 && dx > 0);
-    if (!owner) return false;
-  }
-  return true;
-}
 
 // A random window coordinate pair near an anchor at distance `size` in a random direction;
 // clamped to the guard band the rasterizer accepts.
@@ -116,7 +94,7 @@ void check_coverage(uint32_t seed, int w, int h, int cases) {
     const int64_t Y[3] = {to_fixed(vy[0]), to_fixed(vy[1]), to_fixed(vy[2])};
     for (int y = 0; y < h; ++y)
       for (int x = 0; x < w; ++x) {
-        const bool want = reference_covers(X, Y, x, y);
+        const bool want = ref_covers(X, Y, x, y);
         const bool got = t.rgba(x, y)[0] != 0;
         covered += got;
         if (want != got) {
