@@ -113,6 +113,70 @@ constexpr size_t kProjectionStackDepth = 32;
 constexpr size_t kTextureStackDepth = 10;
 constexpr size_t kClientAttribStackDepth = 16;
 constexpr int kMaxViewportDim = 16384;
+constexpr size_t kAttribStackDepth = 16; // MAX_ATTRIB_STACK_DEPTH, at least 16 (Table 6.33)
+
+// What glPushAttrib saves (GL 2.1 §6.1.14): one member per attribute group of the state tables'
+// "attribute" column, filled only for the groups in `mask`. Groups whose state Pineda does not
+// have yet are listed in attrib.cpp with the state they must grow to cover.
+struct AttribFrame {
+  GLbitfield mask = 0;
+  struct Current { // current (Table 6.5)
+    float color[4], color2[4], normal[3], tex[kMaxTexUnits][4];
+    bool edge;
+  } current{};
+  struct Enables { // enable: every flag of enable_flags() in attrib.cpp, in that order
+    bool flag[kMaxClipPlanes + kMaxLights + 16];
+  } enables{};
+  struct Polygon { // polygon (Table 6.14)
+    bool cull_enabled;
+    GLenum cull_face, front_face, polygon_mode[2];
+  } polygon{};
+  struct Lighting { // lighting (Tables 6.11-6.13)
+    bool enabled, local_viewer, two_side, color_material;
+    Light light[kMaxLights];
+    Material material[2];
+    float model_ambient[4];
+    GLenum color_control, color_material_face, color_material_mode, shade_model;
+  } lighting{};
+  struct Depth { // depth-buffer (Tables 6.21, 6.22)
+    bool test, mask;
+    GLenum func;
+    double clear;
+  } depth{};
+  struct ColorBuffer { // color-buffer (Tables 6.20-6.22)
+    bool alpha_test, blend, dither, color_logic_op, index_logic_op, color_mask[4];
+    GLenum alpha_func, blend_src_rgb, blend_dst_rgb, blend_src_a, blend_dst_a, blend_eq_rgb,
+        blend_eq_a, logic_op, draw_buffer;
+    float alpha_ref, blend_color[4], clear_color[4];
+  } color{};
+  struct Stencil { // stencil-buffer (Tables 6.21, 6.22)
+    bool test;
+    GLenum func, fail, depth_fail, depth_pass;
+    GLint ref, clear;
+    GLuint value_mask, writemask;
+  } stencil{};
+  struct Scissor { // scissor (Table 6.20)
+    bool test;
+    GLint box[4];
+  } scissor{};
+  struct Viewport { // viewport (Table 6.10)
+    GLint x, y;
+    GLsizei w, h;
+    double near, far;
+  } viewport{};
+  struct Transform { // transform (Table 6.10)
+    GLenum matrix_mode;
+    double clip_plane[kMaxClipPlanes][4];
+    bool clip_enabled[kMaxClipPlanes];
+    bool normalize, rescale_normal;
+  } transform{};
+  struct Hints { // hint (Table 6.32)
+    GLenum perspective, point_smooth, line_smooth, polygon_smooth, fog, generate_mipmap,
+        texture_compression;
+  } hints{};
+  bool color_sum = false; // fog: the COLOR_SUM enable (Table 6.11)
+  GLenum read_buffer = GL_FRONT; // pixel (Table 6.27)
+};
 
 struct Context {
   Context();
@@ -226,6 +290,7 @@ struct Context {
   std::shared_ptr<SharedObjects> shared;
   std::unordered_map<GLuint, std::unique_ptr<BufferObject>>& buffers; // shared->buffers
   std::vector<ClientAttribFrame> client_attrib_stack;
+  std::vector<AttribFrame> attrib_stack; // glPushAttrib (src/state/attrib.cpp)
 
   // ---- derived state (validate.cpp) ----
   uint32_t dirty = kDirtyAll;

@@ -254,6 +254,7 @@ bool get_values(Context* ctx, GLenum pname, Values& out) {
   case GL_ARRAY_BUFFER_BINDING: out.add(ctx->array_buffer); return true;
   case GL_ELEMENT_ARRAY_BUFFER_BINDING: out.add(ctx->element_array_buffer); return true;
   case GL_CLIENT_ATTRIB_STACK_DEPTH: out.add(double(ctx->client_attrib_stack.size())); return true;
+  case GL_ATTRIB_STACK_DEPTH: out.add(double(ctx->attrib_stack.size())); return true; // §6.1.14
 
   // Framebuffer (Table 6.34 / 6.35).
   case GL_RED_BITS:
@@ -282,6 +283,7 @@ bool get_values(Context* ctx, GLenum pname, Values& out) {
   case GL_MAX_PROJECTION_STACK_DEPTH: out.add(double(kProjectionStackDepth)); return true;
   case GL_MAX_TEXTURE_STACK_DEPTH: out.add(double(kTextureStackDepth)); return true;
   case GL_MAX_CLIENT_ATTRIB_STACK_DEPTH: out.add(double(kClientAttribStackDepth)); return true;
+  case GL_MAX_ATTRIB_STACK_DEPTH: out.add(double(kAttribStackDepth)); return true;
   // GL 1.2 DrawRangeElements recommendations: Pineda has no such limit; report large values.
   case GL_MAX_ELEMENTS_VERTICES:
   case GL_MAX_ELEMENTS_INDICES: out.add(1 << 20); return true;

@@ -144,6 +144,8 @@ std::vector<Call> illegal_inside_begin_end() {
       {"glLogicOp", [] { glLogicOp(GL_XOR); }},
       {"glDrawBuffer", [] { glDrawBuffer(GL_FRONT); }},
       {"glReadBuffer", [] { glReadBuffer(GL_FRONT); }},
+      {"glPushAttrib", [] { glPushAttrib(GL_ALL_ATTRIB_BITS); }},
+      {"glPopAttrib", [] { glPopAttrib(); }},
   };
 }
 
