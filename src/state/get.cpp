@@ -358,8 +358,8 @@ const GLubyte* GLAPIENTRY GetString(GLenum name) {
   // Honest version (GL 2.1 §6.1.11): the fixed-function feature set is not complete yet, so
   // only the GL 1.1 number is claimed, with the gaps spelled out.
   case GL_VERSION:
-    s = "1.1 Pineda 0.1 (subset: no texturing, fog, display lists, pixel drawing, accumulation, "
-        "selection or attribute stack yet)";
+    s = "1.1 Pineda 0.1 (subset: no texturing, fog, display lists, pixel drawing, accumulation "
+        "or selection yet)";
     break;
   case GL_EXTENSIONS: s = ""; break;
   default: record_error(ctx, GL_INVALID_ENUM, "glGetString", name); return nullptr;
