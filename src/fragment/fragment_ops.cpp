@@ -287,6 +287,22 @@ unsigned stencil_depth_row(const FragCtx& ctx, const FragInputs& in, int bx, int
   return zpass;
 }
 
+// Blend or logical operation, then colour mask, of source row `s` against destination `dst`
+// (GL 2.1 §4.1.8, §4.1.10, §4.2.2); the result is left in `s`.
+template <ColorFormat F, ColorPath C, BlendPath B>
+inline void combine_row4(const FragCtx& ctx, unsigned m, bool logic, Row& s, const Row& dst) {
+  if constexpr (B == BlendPath::Over)
+    blend_over_row<F>(s, dst);
+  else if constexpr (B == BlendPath::Generic)
+    blend_generic_row<F>(ctx, m, s, dst);
+  if (logic)
+    for (int h = 0; h < 2; ++h) s.v[h] = apply_logic(ctx.logic, s.v[h], dst.v[h]);
+  if constexpr (C == ColorPath::Partial) {
+    const u32x4 keep = u32x4{} + ctx.color_keep;
+    for (int h = 0; h < 2; ++h) s.v[h] = (dst.v[h] & keep) | (s.v[h] & ~keep);
+  }
+}
+
 // Blend, colour mask and store of one row of a 4-byte format (GL 2.1 §4.1.8, §4.2.2). Full
 // rows load and store the eight pixels whole; others touch only their fragments.
 template <ColorFormat F, ColorPath C, BlendPath B, bool X>
@@ -303,16 +319,7 @@ void write_row4(const FragCtx& ctx, uint8_t* row, unsigned m, bool in_buffer, Ro
     // The whole row lies in the buffer: compute all eight lanes and select the covered ones.
     Row dst;
     std::memcpy(&dst, row, sizeof(dst));
-    if constexpr (B == BlendPath::Over)
-      blend_over_row<F>(s, dst);
-    else if constexpr (B == BlendPath::Generic)
-      blend_generic_row<F>(ctx, m, s, dst);
-    if (logic)
-      for (int h = 0; h < 2; ++h) s.v[h] = apply_logic(ctx.logic, s.v[h], dst.v[h]);
-    if constexpr (C == ColorPath::Partial) {
-      const u32x4 keep = u32x4{} + ctx.color_keep;
-      for (int h = 0; h < 2; ++h) s.v[h] = (dst.v[h] & keep) | (s.v[h] & ~keep);
-    }
+    combine_row4<F, C, B>(ctx, m, logic, s, dst);
     i32x4 lanes[2];
     bits_to_lanes(m, lanes[0], lanes[1]);
     for (int h = 0; h < 2; ++h) dst.v[h] = lanes[h] ? s.v[h] : dst.v[h];
@@ -327,16 +334,7 @@ void write_row4(const FragCtx& ctx, uint8_t* row, unsigned m, bool in_buffer, Ro
       if ((m >> i) & 1u) std::memcpy(&tmp[i], row + 4 * i, 4);
   }
   std::memcpy(&dst, tmp, sizeof(dst));
-  if constexpr (B == BlendPath::Over)
-    blend_over_row<F>(s, dst);
-  else if constexpr (B == BlendPath::Generic)
-    blend_generic_row<F>(ctx, m, s, dst);
-  if (logic)
-    for (int h = 0; h < 2; ++h) s.v[h] = apply_logic(ctx.logic, s.v[h], dst.v[h]);
-  if constexpr (C == ColorPath::Partial) {
-    const u32x4 keep = u32x4{} + ctx.color_keep;
-    for (int h = 0; h < 2; ++h) s.v[h] = (dst.v[h] & keep) | (s.v[h] & ~keep);
-  }
+  combine_row4<F, C, B>(ctx, m, logic, s, dst);
   std::memcpy(tmp, &s, sizeof(tmp));
   for (int i = 0; i < N; ++i)
     if ((m >> i) & 1u) std::memcpy(row + 4 * i, &tmp[i], 4);
