@@ -28,6 +28,11 @@ enum DirtyBit : uint32_t {
   kDirtyPolygon = 1u << 3,     // culling, front face, polygon mode, shade model
   kDirtyFragment = 1u << 4,    // depth, blend, colour mask
   kDirtyFramebuffer = 1u << 5, // the drawable changed
+  kDirtyTexture = 1u << 6,     // texture enables, bindings, objects, environment, coordinate generation
+  kDirtyFog = 1u << 7,         // fog state, fog coordinate source
+  kDirtyRasterMode = 1u << 8,  // line width/stipple/smooth, point size/parameters, polygon offset/stipple
+  kDirtyPixel = 1u << 9,       // pixel transfer, pixel maps, pixel zoom
+  kDirtyRenderMode = 1u << 10, // glRenderMode, feedback/selection buffers, active queries
   kDirtyLighting = 1u << 16,   // lighting state, or normalize / rescale-normal enables
   kDirtyAll = 0xffffffffu,
 };
