@@ -14,6 +14,7 @@ PACKAGES=(
   libx11-dev libxext-dev # GLX over Xlib, presenting with MIT-SHM (XShm)
   xvfb mesa-utils        # GLX tests: a private X server; unmodified glxinfo
   libglfw3-dev           # GLX tests: an unmodified GLFW program
+  piglit                 # scripts/piglit.sh: the external GL 1.x test list (not in the test run)
 )
 
 missing=()

@@ -1,0 +1,112 @@
+#!/usr/bin/env bash
+# Runs piglit's GL 1.x list (gl1x-tests.txt beside this script, from Debian's piglit package)
+# against Pineda's libGL.so.1 and, for reference, against Mesa llvmpipe limited to GL 1.5, under
+# one private Xvfb. Not part of the test run (scripts/test.sh): it takes several minutes.
+#
+# Usage: conformance/piglit/run.sh [--build DIR] [--out DIR] [--filter REGEX] [--no-mesa] [--jobs N]
+# Writes <out>/results.tsv (test, pineda result, mesa result, seconds) and <out>/logs/, prints
+# each test and the totals, and exits non-zero when a test that passes on Mesa does not pass on
+# Pineda without being listed in expectations.txt, or when a listed test passes (a stale entry).
+set -euo pipefail
+cd "$(dirname "$0")/../.."
+
+BUILD=build
+OUT=piglit-out
+FILTER=.
+MESA=1
+JOBS=2
+while [ $# -gt 0 ]; do
+  case "$1" in
+    --build) BUILD=$2; shift 2 ;;
+    --out) OUT=$2; shift 2 ;;
+    --filter) FILTER=$2; shift 2 ;;
+    --no-mesa) MESA=0; shift ;;
+    --jobs) JOBS=$2; shift 2 ;;
+    -h|--help) sed -n 2,9p "$0"; exit 0 ;;
+    *) echo "run.sh: unknown argument '$1' (see --help)" >&2; exit 2 ;;
+  esac
+done
+
+BIN=/usr/lib/x86_64-linux-gnu/piglit/bin
+LIST=conformance/piglit/gl1x-tests.txt
+EXPECT=conformance/piglit/expectations.txt
+if [ ! -d "$BIN" ]; then
+  echo "run.sh: $BIN is missing; install Debian's piglit package (scripts/deps.sh does)" >&2
+  exit 2
+fi
+if [ ! -e "$BUILD/lib/libGL.so.1" ]; then
+  echo "run.sh: $BUILD/lib/libGL.so.1 is missing; build the 'pineda' target first" >&2
+  exit 2
+fi
+LIB=$(cd "$BUILD/lib" && pwd)
+
+rm -rf "$OUT"
+mkdir -p "$OUT/logs"
+
+# One test, one implementation: prints the piglit result word (pass, fail, skip, warn, crash,
+# timeout).
+run_one() {
+  local impl=$1 line=$2 name=${2%% *} log status result
+  log="$OUT/logs/$name.$impl.log"
+  local -a env_args
+  if [ "$impl" = pineda ]; then
+    env_args=(LD_LIBRARY_PATH="$LIB")
+  else
+    # GL 1.5, as the list was chosen for (LIST.md).
+    env_args=(MESA_GL_VERSION_OVERRIDE=1.5 MESA_EXTENSION_MAX_YEAR=2003 GALLIUM_DRIVER=llvmpipe)
+  fi
+  local start=$SECONDS
+  # shellcheck disable=SC2086 # the list line carries the test's own arguments
+  set +e
+  env "${env_args[@]}" timeout 120 "$BIN"/$line >"$log" 2>&1
+  status=$?
+  set -e
+  result=$(sed -n 's/.*PIGLIT: {"result": "\([a-z]*\)".*/\1/p' "$log" | tail -n1)
+  if [ $status -eq 124 ]; then
+    result=timeout
+  elif [ -z "$result" ]; then
+    result=crash
+  fi
+  echo "$result $((SECONDS - start))"
+}
+export -f run_one
+export OUT LIB BIN
+
+one_line() {
+  local line=$1 name=${1%% *} p m="-"
+  p=$(run_one pineda "$line")
+  if [ "$MESA" = 1 ]; then m=$(run_one mesa "$line" | cut -d' ' -f1); fi
+  printf '%s\t%s\t%s\t%s\n' "$name" "${p%% *}" "$m" "${p##* }"
+}
+export -f one_line
+export MESA
+
+tests/glx/run_with_xvfb.sh "$(command -v Xvfb)" bash -c "
+  grep -v '^#' '$LIST' | grep -E -- '$FILTER' | xargs -P '$JOBS' -I{} bash -c 'one_line \"\$@\"' _ {}
+" | sort >"$OUT/results.tsv"
+
+total=$(wc -l <"$OUT/results.tsv")
+expected() { grep -v '^#' "$EXPECT" 2>/dev/null | awk '{print $1}' | grep -qx -- "$1"; }
+printf '%-55s %-8s %-8s %s\n' test pineda mesa note
+bad=0
+while IFS=$'\t' read -r name p m secs; do
+  note=""
+  if [ "$m" = pass ] && [ "$p" != pass ]; then
+    if expected "$name"; then note="expected (expectations.txt)"; else note="UNEXPECTED"; bad=$((bad + 1)); fi
+  elif [ "$p" = pass ] && expected "$name"; then
+    note="STALE expectation: passes now"; bad=$((bad + 1))
+  fi
+  printf '%-55s %-8s %-8s %s\n' "$name" "$p" "$m" "$note"
+done <"$OUT/results.tsv"
+echo
+echo "piglit GL 1.x list: $total tests (results in $OUT/results.tsv, logs in $OUT/logs)"
+for r in pass fail skip warn crash timeout; do
+  p=$(awk -F'\t' -v r=$r '$2 == r' "$OUT/results.tsv" | wc -l)
+  m=$(awk -F'\t' -v r=$r '$3 == r' "$OUT/results.tsv" | wc -l)
+  printf '  %-8s pineda %4d   mesa %4s\n' "$r" "$p" "$([ "$MESA" = 1 ] && echo "$m" || echo -)"
+done
+if [ "$MESA" = 1 ]; then
+  echo "  passing on Mesa but not on Pineda: $(awk -F'\t' '$3 == "pass" && $2 != "pass"' "$OUT/results.tsv" | wc -l)"
+  echo "  unexpected results (not in expectations.txt, or stale entries): $bad"
+  [ "$bad" -eq 0 ]
+fi
