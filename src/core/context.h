@@ -18,6 +18,7 @@
 #include "raster/raster.h"
 #include "state/lighting_state.h"
 #include "state/texpipe_state.h"
+#include "texture/texture_object.h"
 
 namespace pineda {
 
@@ -81,6 +82,11 @@ struct BufferObject {
 // objects concurrently (the container itself is not locked).
 struct SharedObjects {
   std::unordered_map<GLuint, std::unique_ptr<BufferObject>> buffers;
+  // Texture objects (GL 2.1 §3.8.12) by name; name 0 is each context's default object.
+  std::unordered_map<GLuint, std::unique_ptr<TextureObject>> textures;
+  // Bumped on every change of any texture image or parameter (also of default objects), so
+  // views made by make_sampler_view (texture/sampler.h) know when to be remade.
+  uint64_t texture_generation = 0;
 };
 
 // glPushClientAttrib saves these (GL 2.1 §6.1.14, CLIENT_PIXEL_STORE_BIT and
@@ -235,6 +241,9 @@ struct Context {
   bool clip_enabled[kMaxClipPlanes] = {};
   bool normalize = false;
   bool rescale_normal = false;
+
+  // ---- texture objects and bindings (GL 2.1 §3.8.12), src/texture/texture_object.cpp ----
+  TextureState texobj;
 
   // ---- lighting (GL 2.1 §2.14.1-§2.14.4), src/state/lighting.cpp ----
   LightingState lighting;
