@@ -110,7 +110,7 @@ TEST(TexEnv, FixedFunctionsMatchTable322) {
       // DECAL is defined for RGB and RGBA only.
       if (mode == GL_DECAL && b != TexBase::RGB && b != TexBase::RGBA) continue;
       for (int iter = 0; iter < 200; ++iter) {
-        double cp[4], raw[4], cc[4], cs[4], ref[4];
+        double cp[4], raw[4], cc[4], cs[4] = {}, ref[4];
         for (int k = 0; k < 4; ++k)
           cp[k] = rng.unit(), raw[k] = rng.unit(), cc[k] = rng.unit();
         expand(b, raw, cs);
@@ -285,7 +285,7 @@ TEST(TexGen, EveryModeAndTheTextureMatrix) {
   float attr[kMaxAttr] = {};
   tex_vertex(ts, pos, nrm, tex, 0.0f, attr);
 
-  double eye[4], n[3];
+  double eye[4], n[4] = {0, 0, 0, 0};
   for (int r = 0; r < 4; ++r)
     eye[r] = mv[r] * pos[0] + mv[4 + r] * pos[1] + mv[8 + r] * pos[2] + mv[12 + r] * pos[3];
   for (int r = 0; r < 3; ++r)
@@ -293,7 +293,7 @@ TEST(TexGen, EveryModeAndTheTextureMatrix) {
   const double len = std::sqrt(eye[0] * eye[0] + eye[1] * eye[1] + eye[2] * eye[2]);
   const double uu[3] = {eye[0] / len, eye[1] / len, eye[2] / len};
   const double nu = n[0] * uu[0] + n[1] * uu[1] + n[2] * uu[2];
-  double rf[3];
+  double rf[4] = {0, 0, 0, 0};
   for (int k = 0; k < 3; ++k)
     rf[k] = uu[k] - 2 * n[k] * nu;
   const double m = 2 * std::sqrt(rf[0] * rf[0] + rf[1] * rf[1] + (rf[2] + 1) * (rf[2] + 1));
