@@ -313,9 +313,11 @@ void shade_block(const FragCtx& ctx, const FragInputs& in, int bx, int by, uint6
           c[ch] = cv[ch];
       }
     }
+    // §3.9 clamps the sum; llvmpipe (the tie-breaker) carries it unclamped into fog and
+    // clamps only the final colour, which differs once the sum exceeds 1 under fog.
     if (ss.color_sum)
       for (int ch = 0; ch < 3; ++ch)
-        c[ch] = clamp01(c[ch] + c2[f][ch]);
+        c[ch] += c2[f][ch];
     if (ss.fog) {
       const float fi = fi0 + static_cast<float>(p & 7), fj = fj0 + static_cast<float>(p >> 3);
       const float coord = eval(si.fog_w, fi, fj) * w[p];
