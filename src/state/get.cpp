@@ -12,6 +12,7 @@ namespace pineda {
 bool query_enabled(Context* ctx, GLenum cap, bool* value); // enable.cpp
 // texenv.cpp: up to 16 values; kind 0 integer, 1 boolean, 2 float, 3 normalized.
 bool texpipe_get(Context* ctx, GLenum pname, int* kind, double* values, int* count);
+int texture_get_values(Context* ctx, GLenum pname, double* v, bool* is_float); // texture/
 
 namespace {
 
@@ -69,6 +70,14 @@ bool get_values(Context* ctx, GLenum pname, Values& out) {
   if (query_enabled(ctx, pname, &enabled)) {
     out.kind = Kind::Bool;
     out.add(enabled ? 1 : 0);
+    return true;
+  }
+  // Texture object bindings and limits (src/texture/texture_object.cpp).
+  double tv[4];
+  bool tf = false;
+  if (const int tn = texture_get_values(ctx, pname, tv, &tf)) {
+    if (tf) out.kind = Kind::Float;
+    for (int i = 0; i < tn; ++i) out.add(tv[i]);
     return true;
   }
   if (const ClientArray* a = array_for(ctx, pname)) {
