@@ -411,10 +411,6 @@ bool texpipe_get(Context* ctx, GLenum pname, int* kind, double* v, int* n) {
   case GL_FOG_COORD_SRC:
     v[(*n)++] = fog.coord_src;
     return true;
-  // GL 1.4 TEXTURE_LOD_BIAS limit, the value llvmpipe reports.
-  case GL_MAX_TEXTURE_LOD_BIAS:
-    *kind = kFloat, v[(*n)++] = 16.0;
-    return true;
   default:
     return false;
   }
