@@ -4,8 +4,7 @@
 //
 // Level of detail follows llvmpipe: one lambda per 2x2 quad (quads aligned to even pixel
 // positions), from the differences of the coordinates along the quad's upper row (d/dx) and
-// left column (d/dy), with rho the largest of the scaled absolute differences (the
-// approximation llvmpipe uses instead of the square roots of §3.8.8 eq 3.19).
+// left column (d/dy), with rho the longer of the two scaled derivative vectors (§3.8.8).
 #include "fragment/shade.h"
 
 #include <algorithm>
@@ -22,6 +21,16 @@ inline float clamp01(float v) {
 
 inline float eval(const PlaneF& p, float fi, float fj) {
   return p.v0 + fi * p.dx + fj * p.dy;
+}
+
+// log2 as llvmpipe's level-of-detail computation takes it: exact at powers of two and linear
+// in between (floor(log2 x) + x / 2^floor(log2 x) - 1). Its integer part is the exact one, so
+// nearest-level selection is unaffected; the fraction that weighs two levels (§3.8.10
+// LINEAR_MIPMAP_*) follows llvmpipe's.
+inline float fast_log2(float x) {
+  int e = 0;
+  const float m = std::frexp(x, &e); // x = m 2^e, m in [1/2, 1)
+  return static_cast<float>(e - 2) + 2.0f * m;
 }
 
 // One combine argument (§3.8.13 Table 3.26/3.27): the operand applied to the source colour.
@@ -257,7 +266,8 @@ void shade_block(const FragCtx& ctx, const FragInputs& in, int bx, int by, uint6
       if (!(pairs & (1u << q))) continue;
       for (int m = 0; m < 4; ++m) {
         const int ll = 16 * q + 2 * m, ul = ll + 8, ur = ul + 1;
-        float rho = 0.0f;
+        // Scaled derivatives (u, v, w) along x and y (§3.8.8 eq 3.18).
+        float dx[3] = {0, 0, 0}, dy[3] = {0, 0, 0};
         if (cube) {
           // Derivatives of the face coordinates of the quad's upper-left major axis.
           const float ax = std::fabs(s[ul]), ay = std::fabs(t[ul]), az = std::fabs(r[ul]);
@@ -273,19 +283,21 @@ void shade_block(const FragCtx& ctx, const FragInputs& in, int bx, int by, uint6
           face(ul, u0, v0);
           face(ur, u1, v1);
           face(ll, u2, v2);
-          rho = std::max({std::fabs(u1 - u0) * width, std::fabs(v1 - v0) * width,
-                          std::fabs(u0 - u2) * width, std::fabs(v0 - v2) * width});
+          dx[0] = (u1 - u0) * width, dx[1] = (v1 - v0) * width;
+          dy[0] = (u0 - u2) * width, dy[1] = (v0 - v2) * width;
         } else {
-          rho = std::max(std::fabs(s[ur] - s[ul]), std::fabs(s[ul] - s[ll])) * width;
+          dx[0] = (s[ur] - s[ul]) * width, dy[0] = (s[ul] - s[ll]) * width;
           if (su.dims != LodDims::One)
-            rho = std::max(rho,
-                           std::max(std::fabs(t[ur] - t[ul]), std::fabs(t[ul] - t[ll])) * height);
+            dx[1] = (t[ur] - t[ul]) * height, dy[1] = (t[ul] - t[ll]) * height;
           if (su.dims == LodDims::Three)
-            rho =
-                std::max(rho, std::max(std::fabs(r[ur] - r[ul]), std::fabs(r[ul] - r[ll])) * depth);
+            dx[2] = (r[ur] - r[ul]) * depth, dy[2] = (r[ul] - r[ll]) * depth;
         }
+        // §3.8.8 eq 3.19: rho = max of the two derivative vectors' lengths; lambda = log2(rho),
+        // taken as half the log of the squared length.
+        const float rho2 = std::max(dx[0] * dx[0] + dx[1] * dx[1] + dx[2] * dx[2],
+                                    dy[0] * dy[0] + dy[1] * dy[1] + dy[2] * dy[2]);
         // log2(0) is -infinity: plain magnification; keep it finite for the sampler.
-        const float lam = rho > 0.0f ? std::max(std::log2(rho), -64.0f) : -64.0f;
+        const float lam = rho2 > 0.0f ? std::max(0.5f * fast_log2(rho2), -64.0f) : -64.0f;
         lam_px[ll] = lam_px[ll + 1] = lam_px[ul] = lam_px[ur] = lam;
       }
     }
