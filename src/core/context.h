@@ -17,6 +17,8 @@
 #include "framebuffer/pixel_store.h"
 #include "raster/raster.h"
 #include "state/lighting_state.h"
+#include "state/texpipe_state.h"
+#include "texture/texture_object.h"
 
 namespace pineda {
 
@@ -63,6 +65,7 @@ struct VertexArrays {
   ClientArray texcoord[kMaxTexUnits];
   ClientArray edgeflag{false, 1, GL_BOOL, 0, nullptr, 0};
   ClientArray secondary{false, 3, GL_FLOAT, 0, nullptr, 0}; // SECONDARY_COLOR_ARRAY
+  ClientArray fog{false, 1, GL_FLOAT, 0, nullptr, 0};       // FOG_COORD_ARRAY (GL 1.4)
 };
 
 // A buffer object (GL 2.1 §2.9).
@@ -79,6 +82,11 @@ struct BufferObject {
 // objects concurrently (the container itself is not locked).
 struct SharedObjects {
   std::unordered_map<GLuint, std::unique_ptr<BufferObject>> buffers;
+  // Texture objects (GL 2.1 §3.8.12) by name; name 0 is each context's default object.
+  std::unordered_map<GLuint, std::unique_ptr<TextureObject>> textures;
+  // Bumped on every change of any texture image or parameter (also of default objects), so
+  // views made by make_sampler_view (texture/sampler.h) know when to be remade.
+  uint64_t texture_generation = 0;
 };
 
 // glPushClientAttrib saves these (GL 2.1 §6.1.14, CLIENT_PIXEL_STORE_BIT and
@@ -98,8 +106,9 @@ struct InputVertex {
   float pos[4];
   float color[4];
   float normal[3];
-  float tex[4]; // texture unit 0; more units come with multitexture
+  float tex[kMaxTexUnits][4]; // per texture unit
   float color2[3]; // secondary colour (GL 1.4, §2.7)
+  float fog;       // fog coordinate (GL 1.4, §2.7)
   uint32_t edge;
 };
 
@@ -181,6 +190,7 @@ struct AttribFrame {
   } hints{};
   bool color_sum = false; // fog: the COLOR_SUM enable (Table 6.11)
   GLenum read_buffer = GL_FRONT; // pixel (Table 6.27)
+  TexPipeAttrib texpipe; // texture environment/generation/enables, fog (src/state/texenv.cpp)
 };
 
 struct Context {
@@ -232,8 +242,14 @@ struct Context {
   bool normalize = false;
   bool rescale_normal = false;
 
+  // ---- texture objects and bindings (GL 2.1 §3.8.12), src/texture/texture_object.cpp ----
+  TextureState texobj;
+
   // ---- lighting (GL 2.1 §2.14.1-§2.14.4), src/state/lighting.cpp ----
   LightingState lighting;
+
+  // ---- texture units and fog (GL 2.1 §2.11.4, §3.8.13, §3.10), src/state/texenv.cpp ----
+  TexPipeState texpipe;
 
   // ---- rasterization (Table 6.11, 6.12) ----
   bool cull_enabled = false;

@@ -10,6 +10,9 @@
 namespace pineda {
 
 bool query_enabled(Context* ctx, GLenum cap, bool* value); // enable.cpp
+// texenv.cpp: up to 16 values; kind 0 integer, 1 boolean, 2 float, 3 normalized.
+bool texpipe_get(Context* ctx, GLenum pname, int* kind, double* values, int* count);
+int texture_get_values(Context* ctx, GLenum pname, double* v, bool* is_float); // texture/
 
 namespace {
 
@@ -54,6 +57,9 @@ const ClientArray* array_for(Context* ctx, GLenum pname) {
   case GL_SECONDARY_COLOR_ARRAY_TYPE:
   case GL_SECONDARY_COLOR_ARRAY_STRIDE:
   case GL_SECONDARY_COLOR_ARRAY_BUFFER_BINDING: return &ctx->arrays.secondary;
+  case GL_FOG_COORD_ARRAY_TYPE:
+  case GL_FOG_COORD_ARRAY_STRIDE:
+  case GL_FOG_COORD_ARRAY_BUFFER_BINDING: return &ctx->arrays.fog;
   default: return nullptr;
   }
 }
@@ -66,6 +72,14 @@ bool get_values(Context* ctx, GLenum pname, Values& out) {
     out.add(enabled ? 1 : 0);
     return true;
   }
+  // Texture object bindings and limits (src/texture/texture_object.cpp).
+  double tv[4];
+  bool tf = false;
+  if (const int tn = texture_get_values(ctx, pname, tv, &tf)) {
+    if (tf) out.kind = Kind::Float;
+    for (int i = 0; i < tn; ++i) out.add(tv[i]);
+    return true;
+  }
   if (const ClientArray* a = array_for(ctx, pname)) {
     switch (pname) {
     case GL_VERTEX_ARRAY_SIZE:
@@ -76,13 +90,15 @@ bool get_values(Context* ctx, GLenum pname, Values& out) {
     case GL_COLOR_ARRAY_TYPE:
     case GL_NORMAL_ARRAY_TYPE:
     case GL_TEXTURE_COORD_ARRAY_TYPE:
-    case GL_SECONDARY_COLOR_ARRAY_TYPE: out.add(a->type); break;
+    case GL_SECONDARY_COLOR_ARRAY_TYPE:
+    case GL_FOG_COORD_ARRAY_TYPE: out.add(a->type); break;
     case GL_VERTEX_ARRAY_STRIDE:
     case GL_COLOR_ARRAY_STRIDE:
     case GL_NORMAL_ARRAY_STRIDE:
     case GL_TEXTURE_COORD_ARRAY_STRIDE:
     case GL_EDGE_FLAG_ARRAY_STRIDE:
-    case GL_SECONDARY_COLOR_ARRAY_STRIDE: out.add(a->stride); break;
+    case GL_SECONDARY_COLOR_ARRAY_STRIDE:
+    case GL_FOG_COORD_ARRAY_STRIDE: out.add(a->stride); break;
     default: out.add(a->buffer); break;
     }
     return true;
@@ -300,7 +316,13 @@ bool get_values(Context* ctx, GLenum pname, Values& out) {
     out.kind = Kind::Float;
     out.add(0);
     return true;
-  default: return false;
+  default: {
+    // Texture units, texture environment and generation, fog (src/state/texenv.cpp).
+    int kind = 0;
+    if (!texpipe_get(ctx, pname, &kind, out.v, &out.n)) return false;
+    out.kind = static_cast<Kind>(kind);
+    return true;
+  }
   }
 }
 
@@ -407,6 +429,7 @@ void GLAPIENTRY GetPointerv(GLenum pname, void** params) {
     break;
   case GL_EDGE_FLAG_ARRAY_POINTER: p = ctx->arrays.edgeflag.pointer; break;
   case GL_SECONDARY_COLOR_ARRAY_POINTER: p = ctx->arrays.secondary.pointer; break;
+  case GL_FOG_COORD_ARRAY_POINTER: p = ctx->arrays.fog.pointer; break;
   default: return record_error(ctx, GL_INVALID_ENUM, "glGetPointerv", pname);
   }
   if (params != nullptr) *params = const_cast<void*>(p);

@@ -104,7 +104,7 @@ TEST(OSMesa, ProcAddress) {
   EXPECT_EQ(OSMesaGetProcAddress("glNotAFunction"), nullptr);
   EXPECT_EQ(OSMesaGetProcAddress(nullptr), nullptr);
   // Not implemented yet, so not offered.
-  EXPECT_EQ(OSMesaGetProcAddress("glTexImage2D"), nullptr);
+  EXPECT_EQ(OSMesaGetProcAddress("glEvalMesh2"), nullptr);
 }
 
 TEST(OSMesa, CurrentContextIsPerThread) {

@@ -1,0 +1,631 @@
+// The texture sampler (GL 2.1 §3.8.8-§3.8.10, §3.8.14): completeness, level of detail, level
+// selection, wrap modes, borders, NEAREST/LINEAR filtering, mipmap interpolation, cube face
+// selection and depth comparison.
+//
+// Where the spec leaves room Pineda does what Mesa llvmpipe does:
+//  - the minification/magnification switch-over point c is 0 for every filter combination
+//    (GL 3.1 and later allow this; llvmpipe does it): lambda > 0 minifies;
+//  - NEAREST_MIPMAP_* picks level base + round-half-up(lambda);
+//  - 8-bit textures with REPEAT or CLAMP_TO_EDGE wraps on every axis are filtered the way
+//    llvmpipe's fixed-point path does it: coordinates with 8 fractional bits (rounded), weights
+//    of 1/256, each linear step v0 + floor((v1 - v0) * w / 256) on 8-bit values, and a mipmap
+//    weight truncated to 1/256. Every other case interpolates in float.
+#include "texture/sampler.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "texture/tex_image.h"
+#include "texture/texture_object.h"
+
+namespace pineda {
+
+namespace {
+
+bool is_mipmap_filter(GLenum f) {
+  return f != GL_NEAREST && f != GL_LINEAR;
+}
+
+// Whether a level sequence matches the base level's format and border (§3.8.10).
+bool same_format(const TexImage& a, const TexImage& b) {
+  return a.is_depth == b.is_depth && a.base == b.base && a.border == b.border &&
+         a.red_size == b.red_size && a.green_size == b.green_size && a.blue_size == b.blue_size &&
+         a.alpha_size == b.alpha_size && a.luminance_size == b.luminance_size &&
+         a.intensity_size == b.intensity_size && a.depth_size == b.depth_size;
+}
+
+int dims_of(GLenum target) {
+  switch (target) {
+  case GL_TEXTURE_1D:
+    return 1;
+  case GL_TEXTURE_3D:
+    return 3;
+  default:
+    return 2;
+  }
+}
+
+// Mipmap completeness of one face (§3.8.10): levels base..q present with the halved sizes.
+// Returns q, or -1 when incomplete.
+int complete_levels(const TextureObject& tex, int face, int dims, bool mipmapped) {
+  const TexParams& p = tex.params;
+  const int base = p.base_level;
+  if (base < 0 || base >= kMaxTexLevels || p.max_level < base) return -1;
+  const TexImage& b = tex.images[face][base];
+  int w = b.width - 2 * b.border;
+  int h = dims >= 2 ? b.height - 2 * b.border : 1;
+  int d = dims >= 3 ? b.depth - 2 * b.border : 1;
+  if (b.width == 0 || w <= 0 || h <= 0 || d <= 0) return -1;
+  if (!mipmapped) return base;
+  int largest = std::max(w, std::max(h, d));
+  int p_levels = 0;
+  while (largest > 1)
+    largest >>= 1, ++p_levels;
+  const int q = std::min({base + p_levels, p.max_level, kMaxTexLevels - 1});
+  for (int level = base + 1; level <= q; ++level) {
+    w = std::max(1, w / 2), h = std::max(1, h / 2), d = std::max(1, d / 2);
+    const TexImage& im = tex.images[face][level];
+    if (!same_format(im, b)) return -1;
+    if (im.width - 2 * im.border != w) return -1;
+    if (dims >= 2 && im.height - 2 * im.border != h) return -1;
+    if (dims >= 3 && im.depth - 2 * im.border != d) return -1;
+  }
+  // Levels past the largest computed size are not needed when max_level is above p.
+  return q;
+}
+
+void expand_border(TexBase base, bool depth, const float* c, float* out) {
+  const float r = std::clamp(c[0], 0.0f, 1.0f), g = std::clamp(c[1], 0.0f, 1.0f);
+  const float b = std::clamp(c[2], 0.0f, 1.0f), a = std::clamp(c[3], 0.0f, 1.0f);
+  if (depth) { // the depth value is the border colour's first component; expanded later
+    out[0] = out[1] = out[2] = out[3] = r;
+    return;
+  }
+  switch (base) {
+  case TexBase::Alpha:
+    out[0] = out[1] = out[2] = 0.0f, out[3] = a;
+    break;
+  case TexBase::Luminance:
+    out[0] = out[1] = out[2] = r, out[3] = 1.0f;
+    break;
+  case TexBase::LuminanceAlpha:
+    out[0] = out[1] = out[2] = r, out[3] = a;
+    break;
+  case TexBase::Intensity:
+    out[0] = out[1] = out[2] = out[3] = r;
+    break;
+  case TexBase::RGB:
+    out[0] = r, out[1] = g, out[2] = b, out[3] = 1.0f;
+    break;
+  case TexBase::RGBA:
+    out[0] = r, out[1] = g, out[2] = b, out[3] = a;
+    break;
+  }
+}
+
+} // namespace
+
+bool make_sampler_view(const TextureObject& tex, SamplerView& out) {
+  out = SamplerView{};
+  const GLenum target = tex.target == 0 ? GL_TEXTURE_2D : tex.target;
+  const int dims = dims_of(target);
+  const TexParams& p = tex.params;
+  const bool mipmapped = is_mipmap_filter(p.min_filter);
+  const int faces = target == GL_TEXTURE_CUBE_MAP ? 6 : 1;
+  int q = -1;
+  for (int f = 0; f < faces; ++f) {
+    const int qf = complete_levels(tex, f, dims, mipmapped);
+    if (qf < 0) return false;
+    q = qf;
+  }
+  const TexImage& b = tex.images[0][p.base_level];
+  if (faces == 6) { // cube completeness: square base images of one size and format
+    for (int f = 0; f < 6; ++f) {
+      const TexImage& im = tex.images[f][p.base_level];
+      if (im.width != im.height || im.width != b.width || !same_format(im, b)) return false;
+    }
+  }
+  out.target = target;
+  out.is_depth = b.is_depth;
+  if (b.is_depth) {
+    out.base = p.depth_mode == GL_INTENSITY ? TexBase::Intensity
+               : p.depth_mode == GL_ALPHA   ? TexBase::Alpha
+                                            : TexBase::Luminance;
+  } else {
+    out.base = b.base;
+  }
+  out.border = b.border;
+  out.width = b.width - 2 * b.border;
+  out.height = dims >= 2 ? b.height - 2 * b.border : 1;
+  out.depth = dims >= 3 ? b.depth - 2 * b.border : 1;
+  out.base_level = p.base_level;
+  out.max_level = q;
+  out.faces = faces;
+  for (int f = 0; f < faces; ++f) {
+    for (int l = p.base_level; l <= q; ++l) {
+      const TexImage& im = tex.images[f][l];
+      SamplerLevel& sl = out.levels[f][l];
+      sl.rgba = im.rgba.empty() ? nullptr : im.rgba.data();
+      sl.z = im.z.empty() ? nullptr : im.z.data();
+      sl.width = im.width;
+      sl.height = dims >= 2 ? im.height : 1;
+      sl.depth = dims >= 3 ? im.depth : 1;
+    }
+  }
+  out.min_filter = p.min_filter;
+  out.mag_filter = p.mag_filter;
+  out.wrap_s = p.wrap_s;
+  out.wrap_t = p.wrap_t;
+  out.wrap_r = p.wrap_r;
+  expand_border(out.base, b.is_depth, p.border_color, out.border_color);
+  out.min_lod = p.min_lod;
+  out.max_lod = p.max_lod;
+  out.lod_bias = p.lod_bias;
+  out.c = 0.0f;
+  out.compare = b.is_depth && p.compare_mode == GL_COMPARE_R_TO_TEXTURE;
+  out.compare_func = p.compare_func;
+  return true;
+}
+
+namespace {
+
+constexpr float kMaxLodBias = 16.0f; // MAX_TEXTURE_LOD_BIAS
+
+// The two texels and weight of one axis for LINEAR, or the texel for NEAREST (i0), after the
+// wrap mode (GL 2.1 §3.8.8 eq. 3.20-3.26). Indices lie in [-1, size]; those outside
+// [0, size-1] address the border.
+struct Axis {
+  int i0, i1;
+  float w; // weight of i1 (float path)
+  int w8;  // weight of i1 in 1/256 (fixed-point path)
+};
+
+inline float frac(float x) {
+  return x - std::floor(x);
+}
+
+// MIRRORED_REPEAT (§3.8.8): the coordinate mirrored into [0,1].
+inline float mirror(float s) {
+  const float fl = std::floor(s);
+  const float f = s - fl;
+  return (static_cast<int64_t>(fl) & 1) != 0 ? 1.0f - f : f;
+}
+
+inline int clampi(int v, int lo, int hi) {
+  return v < lo ? lo : (v > hi ? hi : v);
+}
+
+// Float coordinates that cannot be converted to int safely are pinned first.
+inline float sane(float s) {
+  if (!(s == s)) return 0.0f;
+  return std::clamp(s, -1.0e6f, 1.0e6f);
+}
+
+Axis axis_nearest(float s, int size, GLenum wrap) {
+  s = sane(s);
+  int i;
+  switch (wrap) {
+  case GL_REPEAT:
+    if ((size & (size - 1)) == 0) {
+      i = static_cast<int>(std::floor(s * float(size))) & (size - 1);
+    } else {
+      i = std::min(static_cast<int>(frac(s) * float(size)), size - 1);
+    }
+    break;
+  case GL_MIRRORED_REPEAT:
+    i = std::min(static_cast<int>(std::floor(mirror(s) * float(size))), size - 1);
+    break;
+  case GL_CLAMP_TO_BORDER: {
+    // §3.8.8: s clamped to [-1/2N, 1 + 1/2N], so the border is reached.
+    i = static_cast<int>(std::floor(s * float(size)));
+    i = clampi(i, -1, size);
+    break;
+  }
+  default: // CLAMP, CLAMP_TO_EDGE: nearest never reaches the border
+    i = clampi(static_cast<int>(std::floor(s * float(size))), 0, size - 1);
+    break;
+  }
+  return Axis{i, i, 0.0f, 0};
+}
+
+Axis axis_linear(float s, int size, GLenum wrap) {
+  s = sane(s);
+  float u;
+  switch (wrap) {
+  case GL_REPEAT:
+    u = frac(s) * float(size) - 0.5f;
+    break;
+  case GL_MIRRORED_REPEAT:
+    u = mirror(s) * float(size) - 0.5f;
+    break;
+  case GL_CLAMP:
+    u = std::clamp(s, 0.0f, 1.0f) * float(size) - 0.5f;
+    break;
+  case GL_CLAMP_TO_EDGE:
+    u = std::clamp(s * float(size), 0.5f, float(size) - 0.5f) - 0.5f;
+    break;
+  default: // CLAMP_TO_BORDER
+    u = std::clamp(s * float(size), -0.5f, float(size) + 0.5f) - 0.5f;
+    break;
+  }
+  const float fl = std::floor(u);
+  Axis a;
+  a.i0 = static_cast<int>(fl);
+  a.i1 = a.i0 + 1;
+  a.w = u - fl;
+  a.w8 = 0;
+  switch (wrap) {
+  case GL_REPEAT:
+    a.i0 = a.i0 < 0 ? a.i0 + size : (a.i0 >= size ? a.i0 - size : a.i0);
+    a.i1 = a.i1 >= size ? a.i1 - size : a.i1;
+    break;
+  case GL_MIRRORED_REPEAT:
+  case GL_CLAMP_TO_EDGE:
+    a.i0 = clampi(a.i0, 0, size - 1);
+    a.i1 = clampi(a.i1, 0, size - 1);
+    break;
+  default: // CLAMP, CLAMP_TO_BORDER: the border is reached
+    a.i0 = clampi(a.i0, -1, size);
+    a.i1 = clampi(a.i1, -1, size);
+    break;
+  }
+  return a;
+}
+
+// The fixed-point variant of axis_linear for REPEAT and CLAMP_TO_EDGE (see the file comment).
+// Coordinates are in 1/256 texel, rounded to nearest (even on ties, as the SIMD conversion).
+Axis axis_linear_fixed(float s, int size, GLenum wrap) {
+  s = sane(s);
+  Axis a;
+  const bool repeat = wrap == GL_REPEAT;
+  const bool pot = (size & (size - 1)) == 0;
+  const float scaled = (repeat && !pot ? frac(s) : s) * float(size) * 256.0f;
+  const int64_t u = static_cast<int64_t>(std::nearbyint(scaled)) - 128;
+  a.w8 = static_cast<int>(u & 255);
+  const int64_t i0 = u >> 8;
+  if (repeat && pot) {
+    a.i0 = static_cast<int>(i0 & (size - 1));
+    a.i1 = static_cast<int>((i0 + 1) & (size - 1));
+  } else if (repeat) {
+    a.i0 = i0 < 0 ? size - 1 : static_cast<int>(std::min<int64_t>(i0, size - 1));
+    a.i1 = a.i0 == size - 1 ? 0 : a.i0 + 1;
+  } else {
+    a.i0 = static_cast<int>(std::clamp<int64_t>(i0, 0, size - 1));
+    a.i1 = static_cast<int>(std::clamp<int64_t>(i0 + 1, 0, size - 1));
+  }
+  a.w = float(a.w8) * (1.0f / 256.0f);
+  return a;
+}
+
+// llvmpipe's 8-bit linear step: v0 + floor((v1 - v0) * w / 256).
+inline int lerp8(int v0, int v1, int w) {
+  return v0 + (((v1 - v0) * w) >> 8);
+}
+
+// One filtered level sample.
+struct LevelCtx {
+  const SamplerView* v;
+  const SamplerLevel* lv;
+  int w, h, d;    // sizes without border
+  int bi, bj, bk; // border width along each axis (0 along axes the target lacks)
+};
+
+// The texel at (i, j, k) (border-relative indices in [-1, size]) as floats; the border
+// colour when outside the image and its border.
+inline size_t texel_index(const LevelCtx& c, int i, int j, int k) {
+  return (size_t(k + c.bk) * size_t(c.lv->height) + size_t(j + c.bj)) * size_t(c.lv->width) +
+         size_t(i + c.bi);
+}
+
+inline void fetch(const LevelCtx& c, int i, int j, int k, float* out) {
+  if (i < -c.bi || i >= c.w + c.bi || j < -c.bj || j >= c.h + c.bj || k < -c.bk ||
+      k >= c.d + c.bk) {
+    for (int q = 0; q < 4; ++q)
+      out[q] = c.v->border_color[q];
+    return;
+  }
+  const size_t idx = texel_index(c, i, j, k);
+  if (c.v->is_depth) {
+    const float z = c.lv->z != nullptr ? c.lv->z[idx] : 0.0f;
+    out[0] = out[1] = out[2] = out[3] = z;
+    return;
+  }
+  const uint8_t* t = c.lv->rgba + idx * 4;
+  constexpr float k255 = 1.0f / 255.0f;
+  out[0] = t[0] * k255, out[1] = t[1] * k255, out[2] = t[2] * k255, out[3] = t[3] * k255;
+}
+
+inline const uint8_t* fetch8(const LevelCtx& c, int i, int j, int k) {
+  return c.lv->rgba + texel_index(c, i, j, k) * 4;
+}
+
+// §3.8.14: the comparison result for texel value `z` and reference `ref`.
+inline float compare(GLenum func, float ref, float z) {
+  bool pass;
+  switch (func) {
+  case GL_LEQUAL:
+    pass = ref <= z;
+    break;
+  case GL_GEQUAL:
+    pass = ref >= z;
+    break;
+  case GL_LESS:
+    pass = ref < z;
+    break;
+  case GL_GREATER:
+    pass = ref > z;
+    break;
+  case GL_EQUAL:
+    pass = ref == z;
+    break;
+  case GL_NOTEQUAL:
+    pass = ref != z;
+    break;
+  case GL_ALWAYS:
+    pass = true;
+    break;
+  default:
+    pass = false;
+    break; // NEVER
+  }
+  return pass ? 1.0f : 0.0f;
+}
+
+// Samples one level with `filter` (NEAREST or LINEAR) at (s, t, r); `ref` is the depth
+// comparison reference. Writes RGBA (for depth textures the (compared) depth in all four).
+void sample_level(const SamplerView& v, int face, int level, GLenum filter, bool fixed, float s,
+                  float t, float r, float ref, float* out) {
+  LevelCtx c;
+  c.v = &v;
+  c.lv = &v.levels[face][level];
+  const int dims = dims_of(v.target);
+  c.bi = v.border;
+  c.bj = dims >= 2 ? v.border : 0;
+  c.bk = dims >= 3 ? v.border : 0;
+  c.w = c.lv->width - 2 * c.bi;
+  c.h = c.lv->height - 2 * c.bj;
+  c.d = c.lv->depth - 2 * c.bk;
+  if (filter == GL_NEAREST) {
+    const Axis as = axis_nearest(s, c.w, v.wrap_s);
+    const Axis at = dims >= 2 ? axis_nearest(t, c.h, v.wrap_t) : Axis{0, 0, 0.0f, 0};
+    const Axis ar = dims >= 3 ? axis_nearest(r, c.d, v.wrap_r) : Axis{0, 0, 0.0f, 0};
+    fetch(c, as.i0, at.i0, ar.i0, out);
+    if (v.compare) out[0] = out[1] = out[2] = out[3] = compare(v.compare_func, ref, out[0]);
+    return;
+  }
+  if (fixed) {
+    const Axis as = axis_linear_fixed(s, c.w, v.wrap_s);
+    const Axis at = dims >= 2 ? axis_linear_fixed(t, c.h, v.wrap_t) : Axis{0, 0, 0.0f, 0};
+    const Axis ar = dims >= 3 ? axis_linear_fixed(r, c.d, v.wrap_r) : Axis{0, 0, 0.0f, 0};
+    int res[2][4];
+    const int nk = dims >= 3 ? 2 : 1;
+    for (int kk = 0; kk < nk; ++kk) {
+      const int k = kk == 0 ? ar.i0 : ar.i1;
+      const uint8_t* t00 = fetch8(c, as.i0, at.i0, k);
+      const uint8_t* t10 = fetch8(c, as.i1, at.i0, k);
+      if (dims == 1) {
+        for (int q = 0; q < 4; ++q)
+          res[kk][q] = lerp8(t00[q], t10[q], as.w8);
+      } else {
+        const uint8_t* t01 = fetch8(c, as.i0, at.i1, k);
+        const uint8_t* t11 = fetch8(c, as.i1, at.i1, k);
+        for (int q = 0; q < 4; ++q)
+          res[kk][q] = lerp8(lerp8(t00[q], t10[q], as.w8), lerp8(t01[q], t11[q], as.w8), at.w8);
+      }
+    }
+    for (int q = 0; q < 4; ++q) {
+      const int val = nk == 2 ? lerp8(res[0][q], res[1][q], ar.w8) : res[0][q];
+      out[q] = float(val) * (1.0f / 255.0f);
+    }
+    return;
+  }
+  const Axis as = axis_linear(s, c.w, v.wrap_s);
+  const Axis at = dims >= 2 ? axis_linear(t, c.h, v.wrap_t) : Axis{0, 0, 0.0f, 0};
+  const Axis ar = dims >= 3 ? axis_linear(r, c.d, v.wrap_r) : Axis{0, 0, 0.0f, 0};
+  const int nj = dims >= 2 ? 2 : 1, nk = dims >= 3 ? 2 : 1;
+  float acc[4] = {0, 0, 0, 0};
+  for (int kk = 0; kk < nk; ++kk) {
+    const float wk = nk == 1 ? 1.0f : (kk == 0 ? 1.0f - ar.w : ar.w);
+    for (int jj = 0; jj < nj; ++jj) {
+      const float wj = nj == 1 ? 1.0f : (jj == 0 ? 1.0f - at.w : at.w);
+      for (int ii = 0; ii < 2; ++ii) {
+        const float wi = ii == 0 ? 1.0f - as.w : as.w;
+        const float wt = wi * wj * wk;
+        float texel[4];
+        fetch(c, ii == 0 ? as.i0 : as.i1, jj == 0 ? at.i0 : at.i1, kk == 0 ? ar.i0 : ar.i1, texel);
+        if (v.compare)
+          texel[0] = texel[1] = texel[2] = texel[3] = compare(v.compare_func, ref, texel[0]);
+        for (int q = 0; q < 4; ++q)
+          acc[q] += wt * texel[q];
+      }
+    }
+  }
+  for (int q = 0; q < 4; ++q)
+    out[q] = acc[q];
+}
+
+// GL 2.1 §3.8.6 Table 3.21: the face and the face's (s, t) for direction (rx, ry, rz).
+// Ties go to z over x and y, and to y over x (llvmpipe's order).
+inline int cube_face(float rx, float ry, float rz, float& s, float& t) {
+  const float ax = std::fabs(rx), ay = std::fabs(ry), az = std::fabs(rz);
+  float sc, tc, ma;
+  int face;
+  if (az >= ax && az >= ay) {
+    face = rz >= 0.0f ? 4 : 5;
+    sc = rz >= 0.0f ? rx : -rx;
+    tc = -ry;
+    ma = az;
+  } else if (ax > ay) {
+    face = rx >= 0.0f ? 0 : 1;
+    sc = rx >= 0.0f ? -rz : rz;
+    tc = -ry;
+    ma = ax;
+  } else {
+    face = ry >= 0.0f ? 2 : 3;
+    sc = rx;
+    tc = ry >= 0.0f ? rz : -rz;
+    ma = ay;
+  }
+  if (ma == 0.0f || !(ma == ma)) {
+    s = t = 0.5f;
+    return face;
+  }
+  s = 0.5f * (sc / ma + 1.0f);
+  t = 0.5f * (tc / ma + 1.0f);
+  return face;
+}
+
+inline void expand_depth(TexBase base, float d, float* out) {
+  switch (base) {
+  case TexBase::Alpha:
+    out[0] = out[1] = out[2] = 0.0f, out[3] = d;
+    break;
+  case TexBase::Intensity:
+    out[0] = out[1] = out[2] = out[3] = d;
+    break;
+  default:
+    out[0] = out[1] = out[2] = d, out[3] = 1.0f;
+    break;
+  }
+}
+
+} // namespace
+
+void sample_texture(const SamplerView& v, int n, const float* s, const float* t, const float* r,
+                    const float* lambda, float bias, float (*rgba)[4]) {
+  const int dims = dims_of(v.target);
+  const bool cube = v.target == GL_TEXTURE_CUBE_MAP;
+  const bool simple_s = v.wrap_s == GL_REPEAT || v.wrap_s == GL_CLAMP_TO_EDGE;
+  const bool simple_t = dims < 2 || v.wrap_t == GL_REPEAT || v.wrap_t == GL_CLAMP_TO_EDGE;
+  const bool simple_r = dims < 3 || v.wrap_r == GL_REPEAT || v.wrap_r == GL_CLAMP_TO_EDGE;
+  const bool fixed = !v.is_depth && !cube && simple_s && simple_t && simple_r;
+  // §3.8.8 eq. 3.17: the biases' sum is clamped to MAX_TEXTURE_LOD_BIAS.
+  const float total_bias = std::clamp(bias + v.lod_bias, -kMaxLodBias, kMaxLodBias);
+  const GLenum minf = v.min_filter;
+  const bool mip_linear = minf == GL_NEAREST_MIPMAP_LINEAR || minf == GL_LINEAR_MIPMAP_LINEAR;
+  const bool mip_nearest = minf == GL_NEAREST_MIPMAP_NEAREST || minf == GL_LINEAR_MIPMAP_NEAREST;
+  const GLenum min_img =
+      (minf == GL_NEAREST || minf == GL_NEAREST_MIPMAP_NEAREST || minf == GL_NEAREST_MIPMAP_LINEAR)
+          ? GL_NEAREST
+          : GL_LINEAR;
+  for (int i = 0; i < n; ++i) {
+    float ss = s[i];
+    float tt = t != nullptr ? t[i] : 0.0f;
+    float rr = r != nullptr ? r[i] : 0.0f;
+    int face = 0;
+    // §3.8.14: the comparison reference is r clamped to [0,1] (for cube maps none exists in
+    // GL 2.1; depth cube maps cannot be specified).
+    const float ref = std::clamp(rr, 0.0f, 1.0f);
+    if (cube) face = cube_face(ss, tt, rr, ss, tt);
+    float lod = lambda[i] + total_bias;
+    if (!(lod == lod)) lod = 0.0f;
+    lod = std::min(lod, v.max_lod);
+    lod = std::max(lod, v.min_lod);
+    float out[4];
+    if (lod <= v.c || !(mip_linear || mip_nearest)) {
+      // Magnification, or minification without mipmaps: the base level only.
+      const GLenum f = lod <= v.c ? v.mag_filter : min_img;
+      sample_level(v, face, v.base_level, f, fixed, ss, tt, rr, ref, out);
+    } else if (mip_nearest) {
+      const int d = v.base_level + static_cast<int>(std::floor(std::min(lod, 64.0f) + 0.5f));
+      sample_level(v, face, clampi(d, v.base_level, v.max_level), min_img, fixed, ss, tt, rr, ref,
+                   out);
+    } else {
+      const float lc = std::min(lod, 64.0f);
+      const float fl = std::floor(lc);
+      int d0 = v.base_level + static_cast<int>(fl);
+      float w = lc - fl;
+      if (d0 >= v.max_level) {
+        d0 = v.max_level;
+        w = 0.0f;
+      }
+      sample_level(v, face, d0, min_img, fixed, ss, tt, rr, ref, out);
+      if (fixed) {
+        const int w8 = static_cast<int>(w * 256.0f);
+        if (w8 > 0) {
+          float o1[4];
+          sample_level(v, face, d0 + 1, min_img, fixed, ss, tt, rr, ref, o1);
+          for (int q = 0; q < 4; ++q) {
+            const int a = static_cast<int>(std::lround(out[q] * 255.0f));
+            const int b = static_cast<int>(std::lround(o1[q] * 255.0f));
+            out[q] = float(lerp8(a, b, w8)) * (1.0f / 255.0f);
+          }
+        }
+      } else if (w > 0.0f) {
+        float o1[4];
+        sample_level(v, face, d0 + 1, min_img, fixed, ss, tt, rr, ref, o1);
+        for (int q = 0; q < 4; ++q)
+          out[q] += w * (o1[q] - out[q]);
+      }
+    }
+    if (v.is_depth) {
+      expand_depth(v.base, out[0], rgba[i]);
+    } else {
+      for (int q = 0; q < 4; ++q)
+        rgba[i][q] = out[q];
+    }
+  }
+}
+
+void downsample_image(const TexImage& src, TexImage& dst, int dims) {
+  const int b = src.border;
+  const int bj = dims >= 2 ? b : 0, bk = dims >= 3 ? b : 0;
+  const int sw = src.width - 2 * b, sh = src.height - 2 * bj, sd = src.depth - 2 * bk;
+  const int dw = dst.width - 2 * b, dh = dst.height - 2 * bj, dd = dst.depth - 2 * bk;
+  const size_t count = size_t(dst.width) * size_t(dst.height) * size_t(dst.depth);
+  auto src_index = [&](int i, int j, int k) {
+    return (size_t(k + bk) * size_t(src.height) + size_t(j + bj)) * size_t(src.width) +
+           size_t(i + b);
+  };
+  // Border texels (index -1 or size) map to the source border; others to the sample centre.
+  auto axis = [](int i, int dsize, int ssize) {
+    if (i < 0) return Axis{-1, -1, 0.0f, 0};
+    if (i >= dsize) return Axis{ssize, ssize, 0.0f, 0};
+    return axis_linear_fixed((float(i) + 0.5f) / float(dsize), ssize, GL_CLAMP_TO_EDGE);
+  };
+  if (src.is_depth)
+    dst.z.assign(count, 0.0f);
+  else
+    dst.rgba.assign(count * 4, 0);
+  size_t o = 0;
+  for (int k = -bk; k < dd + bk; ++k) {
+    const Axis ak = dims >= 3 ? axis(k, dd, sd) : Axis{0, 0, 0.0f, 0};
+    for (int j = -bj; j < dh + bj; ++j) {
+      const Axis aj = dims >= 2 ? axis(j, dh, sh) : Axis{0, 0, 0.0f, 0};
+      for (int i = -b; i < dw + b; ++i, ++o) {
+        const Axis ai = axis(i, dw, sw);
+        if (src.is_depth) {
+          float acc = 0.0f;
+          for (int kk = 0; kk < (dims >= 3 ? 2 : 1); ++kk)
+            for (int jj = 0; jj < (dims >= 2 ? 2 : 1); ++jj)
+              for (int ii = 0; ii < 2; ++ii) {
+                const float wi = ii ? ai.w : 1.0f - ai.w;
+                const float wj = dims >= 2 ? (jj ? aj.w : 1.0f - aj.w) : 1.0f;
+                const float wk = dims >= 3 ? (kk ? ak.w : 1.0f - ak.w) : 1.0f;
+                acc += wi * wj * wk *
+                       src.z[src_index(ii ? ai.i1 : ai.i0, jj ? aj.i1 : aj.i0, kk ? ak.i1 : ak.i0)];
+              }
+          dst.z[o] = acc;
+          continue;
+        }
+        int res[2][4] = {};
+        for (int kk = 0; kk < (dims >= 3 ? 2 : 1); ++kk) {
+          const int kz = kk ? ak.i1 : ak.i0;
+          const uint8_t* t00 = &src.rgba[src_index(ai.i0, aj.i0, kz) * 4];
+          const uint8_t* t10 = &src.rgba[src_index(ai.i1, aj.i0, kz) * 4];
+          const uint8_t* t01 = &src.rgba[src_index(ai.i0, aj.i1, kz) * 4];
+          const uint8_t* t11 = &src.rgba[src_index(ai.i1, aj.i1, kz) * 4];
+          for (int q = 0; q < 4; ++q) {
+            const int r0 = lerp8(t00[q], t10[q], ai.w8);
+            res[kk][q] = dims >= 2 ? lerp8(r0, lerp8(t01[q], t11[q], ai.w8), aj.w8) : r0;
+          }
+        }
+        for (int q = 0; q < 4; ++q)
+          dst.rgba[o * 4 + q] =
+              static_cast<uint8_t>(dims >= 3 ? lerp8(res[0][q], res[1][q], ak.w8) : res[0][q]);
+      }
+    }
+  }
+}
+
+} // namespace pineda

@@ -1,0 +1,80 @@
+// The texture sampler (GL 2.1 §3.8.8-§3.8.10, §3.8.14): a per-draw snapshot of a texture object
+// (SamplerView) and the filtering of up to 64 fragments at a time. The fragment texturing path
+// (texture environments, coordinates) lives elsewhere and calls only what this header declares.
+#pragma once
+
+#include <GL/gl.h>
+
+#include <cstdint>
+
+namespace pineda {
+
+struct Context;
+struct TextureObject;
+struct TexImage;
+
+// The base internal format of a texture as the sampler sees it (GL 2.1 Table 3.15). Depth
+// textures appear as the base DEPTH_TEXTURE_MODE selects (§3.8.14).
+enum class TexBase : uint8_t { Alpha, Luminance, LuminanceAlpha, Intensity, RGB, RGBA };
+
+constexpr int kMaxTexLevels = 12;  // 2048 = 2^11: levels 0..11
+constexpr int kMax3DTexLevels = 9; // 256 = 2^8
+constexpr int kMaxTextureSize = 1 << (kMaxTexLevels - 1);
+constexpr int kMax3DTextureSize = 1 << (kMax3DTexLevels - 1);
+constexpr int kMaxCubeTextureSize = kMaxTextureSize;
+constexpr int kMaxSampleBatch = 64;
+
+// One mipmap level of one face as the sampler reads it. Sizes include the border.
+struct SamplerLevel {
+  const uint8_t* rgba = nullptr; // colour: 4 bytes per texel, expanded by Table 3.23
+  const float* z = nullptr;      // depth textures: one float per texel
+  int width = 0, height = 0, depth = 0;
+};
+
+struct SamplerView {
+  GLenum target = GL_TEXTURE_2D;
+  TexBase base = TexBase::RGBA;
+  int width = 0, height = 0, depth = 0; // base level size without border
+
+  // ---- level and face data ----
+  int border = 0;
+  int base_level = 0; // level_base (§3.8.8)
+  int max_level = 0;  // q (§3.8.10): the last level sampled
+  int faces = 1;      // 6 for cube maps
+  // levels[face][level]; valid for face < faces and base_level <= level <= max_level.
+  SamplerLevel levels[6][kMaxTexLevels];
+  bool is_depth = false;
+
+  // ---- parameters (Table 6.19) ----
+  GLenum min_filter = GL_NEAREST_MIPMAP_LINEAR, mag_filter = GL_LINEAR;
+  GLenum wrap_s = GL_REPEAT, wrap_t = GL_REPEAT, wrap_r = GL_REPEAT;
+  float border_color[4] = {0, 0, 0, 0}; // already expanded by base format
+  float min_lod = -1000.0f, max_lod = 1000.0f;
+  float lod_bias = 0.0f; // the object's TEXTURE_LOD_BIAS
+  float c = 0.0f;        // §3.8.9: the minification/magnification switch-over point
+  bool compare = false;  // TEXTURE_COMPARE_MODE == COMPARE_R_TO_TEXTURE
+  GLenum compare_func = GL_LEQUAL;
+};
+
+// Snapshot of `tex` for one draw; false when `tex` is not complete (§3.8.10), in which case the
+// unit behaves as if texturing were disabled for it (§3.8.15). For depth textures, `base` is the
+// one DEPTH_TEXTURE_MODE selects (Luminance, Intensity or Alpha). The view points into `tex`'s
+// images: it stays valid until the next change of SharedObjects::texture_generation.
+bool make_sampler_view(const TextureObject& tex, SamplerView& out);
+
+// Samples n <= 64 fragments. s, t, r: coordinates already divided by q (cube maps: the
+// direction (s,t,r) before face selection, §3.8.6). lambda: log2 of the scale factor rho
+// (§3.8.8) before any bias; `bias` is the texture unit's TEXTURE_LOD_BIAS (glTexEnv), the
+// sampler adds the object's bias, clamps (MIN/MAX_LOD), chooses mag or min filter (with §3.8.9's
+// c), levels, wraps, borders, depth comparison (§3.8.14 compare mode/func). Output RGBA in
+// [0,1], already expanded by base format as GL 2.1 Table 3.23 says (ALPHA -> (0,0,0,A),
+// LUMINANCE -> (L,L,L,1), INTENSITY -> (I,I,I,I), RGB -> (R,G,B,1)).
+// `t` may be null for 1D textures and `r` for 1D/2D ones.
+void sample_texture(const SamplerView& v, int n, const float* s, const float* t, const float* r,
+                    const float* lambda, float bias, float (*rgba)[4]);
+
+// The object bound to `target` (GL_TEXTURE_1D/2D/3D/CUBE_MAP) of texture unit `unit` (default
+// object when 0 is bound); never null.
+const TextureObject* bound_texture(const Context* ctx, int unit, GLenum target);
+
+} // namespace pineda

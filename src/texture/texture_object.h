@@ -1,0 +1,82 @@
+// Texture objects (GL 2.1 §3.8.12) and their images (§3.8.1-§3.8.5), and the per-context
+// texture bindings. Objects live in SharedObjects (core/context.h); src/texture/texture_object.cpp
+// implements the commands that create, bind and delete them and set their parameters,
+// src/texture/tex_image.cpp the image specification commands.
+#pragma once
+
+#include <GL/gl.h>
+
+#include <cstdint>
+#include <memory>
+#include <vector>
+
+#include "geometry/vertex.h"
+#include "texture/sampler.h"
+
+namespace pineda {
+
+// One image of a texture object: a mipmap level of a 1D, 2D or 3D texture or of one cube face.
+// An image with width 0 is unspecified (§3.8.1: zero-sized images are allowed and unspecified).
+struct TexImage {
+  int width = 0, height = 0, depth = 0; // including the border on each side
+  int border = 0;
+  GLenum internal_format = 1; // TEXTURE_INTERNAL_FORMAT as the application gave it (Table 6.20)
+  TexBase base = TexBase::RGBA;
+  bool is_depth = false; // DEPTH_COMPONENT base format; `base` is then unused
+  // Component resolutions reported by glGetTexLevelParameter (TEXTURE_RED_SIZE ...).
+  uint8_t red_size = 0, green_size = 0, blue_size = 0, alpha_size = 0;
+  uint8_t luminance_size = 0, intensity_size = 0, depth_size = 0;
+  std::vector<uint8_t> rgba; // colour: 4 bytes per texel, expanded by Table 3.23, rows bottom up
+  std::vector<float> z;      // depth: one float per texel
+  int width_no_border() const { return width - 2 * border; }
+};
+
+// The parameters of a texture object (GL 2.1 Table 6.19, §3.8.4, §3.8.14).
+struct TexParams {
+  GLenum min_filter = GL_NEAREST_MIPMAP_LINEAR;
+  GLenum mag_filter = GL_LINEAR;
+  GLenum wrap_s = GL_REPEAT, wrap_t = GL_REPEAT, wrap_r = GL_REPEAT;
+  float border_color[4] = {0, 0, 0, 0};
+  float min_lod = -1000.0f, max_lod = 1000.0f;
+  GLint base_level = 0, max_level = 1000;
+  float lod_bias = 0.0f;
+  float priority = 1.0f;
+  bool generate_mipmap = false;
+  GLenum depth_mode = GL_LUMINANCE;
+  GLenum compare_mode = GL_NONE;
+  GLenum compare_func = GL_LEQUAL;
+};
+
+struct TextureObject {
+  GLuint name = 0;
+  GLenum target = 0; // 0 until first bound; then GL_TEXTURE_1D/2D/3D/CUBE_MAP for good
+  TexParams params;
+  // images[face][level]; faces other than 0 are used by cube maps only, in the order
+  // POSITIVE_X, NEGATIVE_X, POSITIVE_Y, NEGATIVE_Y, POSITIVE_Z, NEGATIVE_Z.
+  TexImage images[6][kMaxTexLevels];
+};
+
+// Index of the texture targets in TextureState's per-unit arrays.
+enum TexTargetIndex : int { kTex1D = 0, kTex2D, kTex3D, kTexCube, kTexTargetCount };
+
+// Per-context texture object state (GL 2.1 Table 6.17 bindings): the default objects (name 0,
+// one per target) and each unit's bound names; also the proxy images (§3.8.11).
+struct TextureState {
+  TextureState();
+  std::unique_ptr<TextureObject> defaults[kTexTargetCount];
+  GLuint bound[kMaxTexUnits][kTexTargetCount] = {};
+  // Proxy targets keep only level state (sizes, formats), never texels.
+  std::unique_ptr<TextureObject> proxies[kTexTargetCount];
+};
+
+// glPushAttrib(TEXTURE_BIT), the part owned by the texture objects: the bindings of every unit
+// and the parameters of the bound objects (GL 2.1 §6.1.14, Table 6.19). attrib.cpp keeps one
+// TextureAttrib in its frame and calls these.
+struct TextureAttrib {
+  GLuint bound[kMaxTexUnits][kTexTargetCount];
+  TexParams params[kMaxTexUnits][kTexTargetCount];
+};
+void save_texture_attrib(const Context* ctx, TextureAttrib& out);
+void restore_texture_attrib(Context* ctx, const TextureAttrib& in);
+
+} // namespace pineda
