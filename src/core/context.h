@@ -17,6 +17,7 @@
 #include "framebuffer/pixel_store.h"
 #include "raster/raster.h"
 #include "state/lighting_state.h"
+#include "state/raster_mode_state.h"
 
 namespace pineda {
 
@@ -181,6 +182,7 @@ struct AttribFrame {
   } hints{};
   bool color_sum = false; // fog: the COLOR_SUM enable (Table 6.11)
   GLenum read_buffer = GL_FRONT; // pixel (Table 6.27)
+  RasterModeAttrib raster_modes{}; // line, point, polygon stipple/offset/smooth (raster_modes.cpp)
 };
 
 struct Context {
@@ -243,6 +245,7 @@ struct Context {
   GLenum shade_model = GL_SMOOTH;
   float point_size = 1.0f;
   float line_width = 1.0f;
+  RasterModeState raster_modes; // stipples, smoothing, point parameters, offset (raster_modes.cpp)
 
   // ---- per-fragment operations and framebuffer control (Tables 6.20-6.22) ----
   bool depth_test = false;

@@ -58,7 +58,7 @@ struct IndexedFetch {
 
 template <class Sink> class Assembler {
 public:
-  Assembler(const DrawCall& dc, Sink& sink) : sink_(sink) {
+  Assembler(const DrawCall& dc, Sink& sink) : sink_(sink), stipple_counter_(dc.stipple_counter) {
     const RasterState& rs = *dc.state;
     init_face_state(face_, rs);
     init_clip_setup(clip_, rs);
@@ -115,7 +115,14 @@ private:
   void triangle_clipped(const PVertex& a, const PVertex& b, const PVertex& c, unsigned edges,
                         const PVertex& pv);
 
+  // GL 2.1 §3.4.2: the stipple counter restarts with each independent segment and with each
+  // strip or loop; polygon outlines (LINE mode) continue it as Mesa does.
+  void reset_stipple() {
+    if (stipple_counter_ != nullptr) *stipple_counter_ = 0.0f;
+  }
+
   Sink& sink_;
+  float* stipple_counter_ = nullptr;
   FaceState face_;
   ClipSetup clip_;
   // Both faces FILL and one-sided colours: an unclipped triangle needs no edge flags, no
@@ -167,12 +174,15 @@ void Assembler<Sink>::run(GLenum mode, const Fetch& f, size_t count) {
       point(f(i));
     break;
   case GL_LINES:
-    for (size_t i = 0; i + 1 < count; i += 2)
+    for (size_t i = 0; i + 1 < count; i += 2) {
+      reset_stipple();
       line(f(i), f(i + 1));
+    }
     break;
   case GL_LINE_STRIP:
   case GL_LINE_LOOP:
     if (count < 2) break;
+    reset_stipple();
     for (size_t i = 1; i < count; ++i)
       line(f(i - 1), f(i));
     // The closing segment runs from the last vertex to the first, which as its second
@@ -266,6 +276,8 @@ void draw_primitives(const DrawCall& dc, GLenum mode, const PVertex* verts, cons
   prepare_fragments(*dc.state, *dc.fb, frag);
   DrawCall prepared = dc;
   prepared.frag = &frag;
+  float stipple_counter = 0.0f;
+  prepared.stipple_counter = &stipple_counter;
   RasterSink sink{prepared};
   assemble(sink, prepared, mode, verts, indices, count);
 }

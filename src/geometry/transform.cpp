@@ -2,6 +2,8 @@
 // coordinates through the composite matrix, clip codes, window coordinates for vertices that
 // need no clipping, and the vertex colours: lit (§2.14.1, light_eval.cpp) or the clamped
 // current colours, with the colour sum (§3.9) folded in.
+#include <cmath>
+
 #include "geometry/clip.h"
 #include "geometry/geometry.h"
 #include "geometry/light_eval.h"
@@ -54,6 +56,12 @@ void draw_vertices(Context* ctx, GLenum mode, const InputVertex* in, size_t n,
   // colour.
   const bool color_sum = lit ? lighting.setup.separate_specular : lighting.color_sum;
   const bool two_sided = rs.two_sided;
+  // GL 1.4 point parameters (GL 2.1 §3.3 eq 3.1): with distance attenuation every vertex gets
+  // its derived size. Mesa takes the distance as |z| in eye coordinates rather than the
+  // Euclidean distance the spec names; Pineda follows llvmpipe.
+  const RasterModes& modes = rs.modes;
+  const bool attenuate = modes.point_attenuated;
+  const glm::mat4& mv = ctx->modelview.top();
 
   for (size_t i = 0; i < n; ++i) {
     const InputVertex& v = in[i];
@@ -83,6 +91,17 @@ void draw_vertices(Context* ctx, GLenum mode, const InputVertex* in, size_t n,
       }
     }
     p.edgeflag = v.edge;
+    p.point_size = 1.0f;
+    if (attenuate) {
+      const float ez = mv[0][2] * x + mv[1][2] * y + mv[2][2] * z + mv[3][2] * w;
+      const float d = ez < 0.0f ? -ez : ez;
+      const float* a = modes.point_attenuation;
+      const float size = modes.point_size / std::sqrt(a[0] + a[1] * d + a[2] * d * d);
+      // A NaN (attenuation <= 0) becomes the minimum.
+      p.point_size = size >= modes.point_size_min
+                         ? (size < modes.point_size_max ? size : modes.point_size_max)
+                         : modes.point_size_min;
+    }
   }
 
   Framebuffer& fb = ctx->fb;

@@ -5,6 +5,7 @@
 #include "core/context.h"
 #include "geometry/geometry.h"
 #include "geometry/light_eval.h"
+#include "state/raster_modes_hooks.h"
 
 namespace pineda {
 
@@ -90,6 +91,7 @@ void validate_state(Context* ctx) {
     // §2.14.1: back colours are computed and selected only with two-sided lighting on.
     rs.two_sided = ls.enabled && ls.two_side;
   }
+  if (dirty & (kDirtyRasterMode | kDirtyFramebuffer)) derive_raster_modes(ctx, rs.modes); // raster_modes.cpp
   // Only the primary colour is read by the fragment stage until texturing and fog exist
   // (transform.cpp folds the colour sum of §3.9 into it).
   rs.attr_count = 4;
