@@ -26,11 +26,12 @@
 // llvmpipe ("the preferred wide-lines formula"); the spec's column of w fragments centred on the
 // diamond-exit fragment differs from this by one pixel at some positions of even widths.
 //
-// Stipple (§3.4.2): the fragment of each column takes bit ((s + floor(d)) / factor) mod 16 of
+// Stipple (§3.4.2): the fragment of each column takes bit ((s + round(d)) / factor) mod 16 of
 // the pattern, where d is the column centre's major-axis distance from the segment start and s
 // the counter carried over from the previous segments of a strip, advanced by the segment's
-// major-axis length; this is how Mesa's draw module cuts stippled lines into dashes (its counter
-// is fractional across strip vertices, where the spec counts fragments).
+// major-axis length rounded up. This is what llvmpipe (Mesa 22.3) produces, measured against
+// it; the spec counts fragments instead, which differs where strip vertices or segment ends
+// are not at pixel centres.
 //
 // Smooth lines (§3.4.3) follow Mesa's draw "aaline" stage: the rectangle around the segment
 // extended by 1/2 pixel at both ends, of half width 1 (w <= 1) or w/2 + 1/2; a fragment at
@@ -117,7 +118,7 @@ void line(const DrawCall& dc, const FragCtx& ctx, const PVertex& a, const PVerte
   float* counter = dc.stipple_counter;
   const float seg_len = std::max(std::fabs(b.win[0] - a.win[0]), std::fabs(b.win[1] - a.win[1]));
   const int64_t stipple_base = (stipple && counter != nullptr) ? static_cast<int64_t>(*counter) : 0;
-  if (stipple && counter != nullptr) *counter += seg_len;
+  if (stipple && counter != nullptr) *counter += std::ceil(seg_len);
   if (dx == 0 && dy == 0) return; // the end point lies in every diamond the start point does
 
   // Interpolation planes from t(x, y) = ((p - pa) . (pb - pa)) / |pb - pa|^2.
@@ -201,7 +202,7 @@ void line(const DrawCall& dc, const FragCtx& ctx, const PVertex& a, const PVerte
     if (stipple) {
       // Major-axis distance of the column centre from the start, whole pixels, >= 0.
       const int64_t dist = (col * kSubpixelOne + kHalf - ua) * (du > 0 ? 1 : -1);
-      const int64_t i = stipple_base + (dist > 0 ? dist / kSubpixelOne : 0);
+      const int64_t i = stipple_base + (dist > -kHalf ? (dist + kHalf) / kSubpixelOne : 0);
       if (((pattern >> ((i / fac) & 15)) & 1u) == 0) return;
     }
     if (!wide) {

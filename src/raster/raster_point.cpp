@@ -11,9 +11,12 @@
 // Smooth points (§3.3.2) as llvmpipe draws them (Mesa's draw "aapoint" stage): a square of
 // radius r = size/2 (at least 1 for sizes <= 2 without attenuation) around the point; a
 // fragment whose centre lies at squared normalized distance d = ((cx-x)^2 + (cy-y)^2) / r^2
-// is produced when d <= 1, with its alpha multiplied by the coverage 1 when d <= k and
-// (1 - d) / (1 - k) beyond, k = (1 - 1/r)^2. The spec asks for the area of the pixel square
-// covered by the disc; this radial ramp is llvmpipe's approximation of it.
+// is produced when d <= 1. The stage means to multiply the alpha by a coverage ramp, 1 for
+// d <= k = (1 - 1/r)^2 and (1 - d) / (1 - k) beyond, but Mesa 22.3's shader selects the ramp
+// for d <= k and 1 beyond: the factor is (1 - d) / (1 - k) >= 1 inside k and 1 elsewhere, so
+// opaque colours give a solid aliased disc. The spec asks for the area of the pixel square
+// covered by the disc; Pineda follows llvmpipe (the factor multiplies the alpha, which is
+// then clamped).
 #include <cmath>
 
 #include "fragment/fragment_ops.h"
@@ -55,7 +58,7 @@ void smooth_point(const FragCtx& ctx, const RasterModes& m, const PVertex& p, fl
       const double dx = px + 0.5 - x;
       const double d = (dx * dx + dy * dy) * inv_r2;
       if (d > 1.0) continue;
-      const double cov = d <= k ? 1.0 : (1.0 - d) / (1.0 - k);
+      const double cov = d <= k ? (1.0 - d) / (1.0 - k) : 1.0;
       rgba[3] = color_to_unorm8(static_cast<float>(alpha * cov));
       emit_fragment(ctx, px, py, z, rgba);
     }

@@ -194,10 +194,16 @@ void derive_raster_modes(const Context* ctx, RasterModes& m) {
   m.line_stipple = s.line_stipple;
   m.line_stipple_factor = s.line_stipple_repeat;
   m.line_stipple_pattern = s.line_stipple_pattern;
-  m.point_size = std::min(ctx->point_size, kMaxPointSize);
   m.point_smooth = s.point_smooth;
   m.point_attenuated = s.point_attenuation[0] != 1.0f || s.point_attenuation[1] != 0.0f ||
                        s.point_attenuation[2] != 0.0f;
+  // GL 2.1 §3.3 eq 3.1: the derived size is clamped to POINT_SIZE_MIN / MAX, also without
+  // attenuation (llvmpipe does the same); with attenuation the geometry stage derives and clamps
+  // it per vertex from the unclamped size.
+  m.point_size = ctx->point_size;
+  if (!m.point_attenuated)
+    m.point_size = std::min(
+        std::max(std::min(ctx->point_size, s.point_size_max), s.point_size_min), kMaxPointSize);
   m.point_size_min = s.point_size_min;
   m.point_size_max = std::min(s.point_size_max, kMaxPointSize);
   m.point_fade_threshold = s.point_fade_threshold;

@@ -72,7 +72,7 @@ TEST(RasterModesOffset, FillMovesDepth) {
   EXPECT_EQ(t.depth(5, 5), 0u);
 }
 
-TEST(RasterModesPoint, SmoothCoverageRamp) {
+TEST(RasterModesPoint, SmoothDiscAsLlvmpipe) {
   TestFb t(40, 40);
   RasterState rs;
   rs.modes.point_smooth = true;
@@ -80,16 +80,18 @@ TEST(RasterModesPoint, SmoothCoverageRamp) {
   DrawCall dc;
   dc.state = &rs;
   dc.fb = &t.fb;
-  raster_point(dc, vtx(20.0f, 20.0f));
-  // llvmpipe's ramp: r = 5, k = (1 - 1/r)^2, coverage (1 - d) / (1 - k) beyond k.
+  const PVertex p = vtx(20.0f, 20.0f, 0.5f, 1.0f, {1.0f, 1.0f, 1.0f, 0.5f});
+  raster_point(dc, p);
+  // r = 5, k = (1 - 1/r)^2; alpha 0.5 times (1 - d) / (1 - k) inside k, times 1 up to d = 1.
   const double r = 5.0, k = (1.0 - 1.0 / r) * (1.0 - 1.0 / r);
   for (int y = 10; y < 30; ++y)
     for (int x = 10; x < 30; ++x) {
       const double dx = x + 0.5 - 20.0, dy = y + 0.5 - 20.0;
       const double d = (dx * dx + dy * dy) / (r * r);
-      const double cov = d > 1.0 ? 0.0 : (d <= k ? 1.0 : (1.0 - d) / (1.0 - k));
-      const int want = d > 1.0 ? 0 : static_cast<int>(cov * 255.0 + 0.5);
+      const double f = d <= k ? (1.0 - d) / (1.0 - k) : 1.0;
+      const int want = d > 1.0 ? 0 : static_cast<int>(std::min(0.5 * f, 1.0) * 255.0 + 0.5);
       EXPECT_NEAR(t.rgba(x, y)[3], want, 1) << x << "," << y;
+      EXPECT_EQ(t.rgba(x, y)[0], d > 1.0 ? 0 : 255) << x << "," << y;
     }
 }
 
