@@ -361,3 +361,66 @@ PINEDA_SCENE(rm_polygon_stipple,
   }
   default_modes();
 }
+
+PINEDA_SCENE(rm_polygon_smooth,
+             "GL_POLYGON_SMOOTH: llvmpipe draws the polygons aliased, so does Pineda") {
+  // GL 2.1 §3.5.6 asks for coverage-weighted alpha at polygon edges; llvmpipe (without
+  // multisampling) ignores the enable and fills the polygons as if it were off.
+  default_modes();
+  clear_frame(0.0f, 0.0f, 0.0f);
+  glEnable(GL_POLYGON_SMOOTH);
+  glEnable(GL_BLEND);
+  glBlendFunc(GL_SRC_ALPHA_SATURATE, GL_ONE);
+  Rng rng(909);
+  glBegin(GL_TRIANGLES);
+  for (int i = 0; i < 24; ++i)
+    for (int k = 0; k < 3; ++k) {
+      palette_color(rng.below(16));
+      glVertex2f(snap(rng.range(4.0f, 252.0f)), snap(rng.range(4.0f, 252.0f)));
+    }
+  glEnd();
+  default_modes();
+}
+
+PINEDA_SCENE(rm_offset_points,
+             "POLYGON_OFFSET_POINT and _LINE on POINT- and LINE-mode polygons over filled ones",
+             .allowance = kLineAllowance, .why = kLineWhy) {
+  default_modes();
+  clear_frame(0.0f, 0.0f, 0.0f);
+  glMatrixMode(GL_PROJECTION);
+  glLoadIdentity();
+  glFrustum(-1.0, 1.0, -1.0, 1.0, 2.0, 6.0);
+  glMatrixMode(GL_MODELVIEW);
+  glLoadIdentity();
+  glTranslatef(0.0f, 0.0f, -4.0f);
+  glRotatef(35.0f, 1.0f, 0.3f, 0.0f);
+  glEnable(GL_DEPTH_TEST);
+  glDepthFunc(GL_LESS);
+  const auto fan = [] {
+    glBegin(GL_TRIANGLE_FAN);
+    glVertex3f(0.0f, 0.0f, 0.3f);
+    for (int k = 0; k <= 8; ++k) {
+      const float a = 2.0f * kPi * static_cast<float>(k) / 8.0f;
+      glVertex3f(1.3f * std::cos(a), 1.3f * std::sin(a), 0.0f);
+    }
+    glEnd();
+  };
+  glColor3f(0.2f, 0.2f, 0.5f);
+  fan();
+  // Without offset the coplanar vertices and edges would fight with the fill; pulled forward
+  // they all pass LESS.
+  glPointSize(4.0f);
+  glPolygonMode(GL_FRONT_AND_BACK, GL_POINT);
+  glEnable(GL_POLYGON_OFFSET_POINT);
+  glPolygonOffset(-1.0f, -4.0f);
+  glColor3f(1.0f, 0.9f, 0.2f);
+  fan();
+  glPolygonMode(GL_FRONT_AND_BACK, GL_LINE);
+  glEnable(GL_POLYGON_OFFSET_LINE);
+  glPolygonOffset(-1.0f, -2.0f);
+  glColor3f(0.2f, 1.0f, 0.9f);
+  glTranslatef(0.0f, 0.0f, 0.0f);
+  fan();
+  default_modes();
+  window_projection(frame);
+}

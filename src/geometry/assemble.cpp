@@ -116,9 +116,13 @@ private:
                         const PVertex& pv);
 
   // GL 2.1 §3.4.2: the stipple counter restarts with each independent segment and with each
-  // strip or loop; polygon outlines (LINE mode) continue it as Mesa does.
+  // strip or loop. Polygon outlines (LINE mode) restart it with every triangle, quad and
+  // polygon, within strips and fans too, as Mesa does (measured against llvmpipe).
   void reset_stipple() {
     if (stipple_counter_ != nullptr) *stipple_counter_ = 0.0f;
+  }
+  void reset_stipple_outline() {
+    if (!fill_fast_) reset_stipple();
   }
 
   Sink& sink_;
@@ -192,6 +196,7 @@ void Assembler<Sink>::run(GLenum mode, const Fetch& f, size_t count) {
   case GL_TRIANGLES:
     // Table 2.12: vertex 3i provokes. Edge flags apply (§2.6.2).
     for (size_t i = 0; i + 2 < count; i += 3) {
+      reset_stipple_outline();
       const PVertex& a = f(i);
       const PVertex& b = f(i + 1);
       const PVertex& c = f(i + 2);
@@ -202,6 +207,7 @@ void Assembler<Sink>::run(GLenum mode, const Fetch& f, size_t count) {
     // §2.6.1: odd triangles are (A, B, current) with A and B swapped relative to the even
     // ones, which keeps the strip's orientation; vertex i+2 provokes (Table 2.12).
     for (size_t i = 0; i + 2 < count; ++i) {
+      reset_stipple_outline();
       if (i & 1)
         triangle(f(i + 1), f(i), f(i + 2), kEdgeAll);
       else
@@ -209,19 +215,30 @@ void Assembler<Sink>::run(GLenum mode, const Fetch& f, size_t count) {
     }
     break;
   case GL_TRIANGLE_FAN:
-    for (size_t i = 0; i + 2 < count; ++i)
+    for (size_t i = 0; i + 2 < count; ++i) {
+      reset_stipple_outline();
       triangle(f(0), f(i + 1), f(i + 2), kEdgeAll);
+    }
     break;
   case GL_QUADS:
     // Vertex 4i provokes (Table 2.12). Split as a fan from q0, along q0-q2, as llvmpipe does
     // (the conformance scene quad_split_colors pins it); the diagonal is not an edge.
     for (size_t i = 0; i + 3 < count; i += 4) {
+      reset_stipple_outline();
       const PVertex& q0 = f(i);
       const PVertex& q1 = f(i + 1);
       const PVertex& q2 = f(i + 2);
       const PVertex& q3 = f(i + 3);
-      triangle(q0, q1, q2, flag_bit(q0, kEdgeAB) | flag_bit(q1, kEdgeBC), q3);
-      triangle(q0, q2, q3, flag_bit(q2, kEdgeBC) | flag_bit(q3, kEdgeCA), q3);
+      if (fill_fast_) {
+        triangle(q0, q1, q2, flag_bit(q0, kEdgeAB) | flag_bit(q1, kEdgeBC), q3);
+        triangle(q0, q2, q3, flag_bit(q2, kEdgeBC) | flag_bit(q3, kEdgeCA), q3);
+      } else {
+        // Outlined (LINE or POINT on some face), Mesa's draw module splits along q1-q3, so the
+        // edges come in its order (which the line stipple counter shows): q3-q0, q0-q1, then
+        // q1-q2, q2-q3.
+        triangle(q0, q1, q3, flag_bit(q0, kEdgeAB) | flag_bit(q3, kEdgeCA), q3);
+        triangle(q1, q2, q3, flag_bit(q1, kEdgeAB) | flag_bit(q2, kEdgeBC), q3);
+      }
     }
     break;
   case GL_QUAD_STRIP:
@@ -232,6 +249,7 @@ void Assembler<Sink>::run(GLenum mode, const Fetch& f, size_t count) {
       const PVertex& v1 = f(i + 1);
       const PVertex& v2 = f(i + 2);
       const PVertex& v3 = f(i + 3);
+      reset_stipple_outline(); // each quad restarts an outline's stipple, as in Mesa
       triangle(v2, v0, v3, kEdgeAB | kEdgeCA);
       triangle(v0, v1, v3, kEdgeAB | kEdgeBC);
     }
@@ -240,6 +258,7 @@ void Assembler<Sink>::run(GLenum mode, const Fetch& f, size_t count) {
     // Vertex 1 provokes (Table 2.12). Fan around v0, each triangle v(i+1), v(i+2), v0 so the
     // provoking vertex is last; only the polygon's own edges are boundary edges.
     if (count < 3) break;
+    reset_stipple_outline();
     const PVertex& v0 = f(0);
     for (size_t i = 0; i + 2 < count; ++i) {
       const PVertex& a = f(i + 1);

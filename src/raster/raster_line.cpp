@@ -263,8 +263,7 @@ void line(const DrawCall& dc, const FragCtx& ctx, const PVertex& a, const PVerte
   batch.flush();
 }
 
-// Smooth line (see top), fragment by fragment with its own colour and depth. Stippling is
-// not applied to smooth lines.
+// Smooth line (see top), fragment by fragment with its own colour and depth.
 void smooth_line(const DrawCall& dc, const FragCtx& ctx, const PVertex& a, const PVertex& b,
                  const PVertex& provoking) {
   if (ctx.noop) return;
@@ -317,9 +316,52 @@ void smooth_line(const DrawCall& dc, const FragCtx& ctx, const PVertex& a, const
   }
 }
 
+// A stippled smooth line is cut into dashes as Mesa's draw module does: with L the segment's
+// Euclidean length and s the counter, unit step i in [0, ceil(L)) is on when bit
+// ((s + i) / factor) mod 16 is set, and each run of on steps [i0, i1) is drawn as a smooth line
+// from t = i0 / L to min(i1 / L, 1), its values interpolated linearly in window space.
+void stippled_smooth_line(const DrawCall& dc, const FragCtx& ctx, const PVertex& a,
+                          const PVertex& b, const PVertex& provoking) {
+  const RasterModes& modes = dc.state->modes;
+  const double dx = b.win[0] - a.win[0], dy = b.win[1] - a.win[1];
+  const double len = std::sqrt(dx * dx + dy * dy);
+  float* counter = dc.stipple_counter;
+  const int64_t base = counter != nullptr ? static_cast<int64_t>(*counter) : 0;
+  if (counter != nullptr) *counter += static_cast<float>(std::ceil(len));
+  if (!(len > 0.0) || len > 1e6) return;
+  const auto sub_vertex = [&](double t, PVertex& v) {
+    v = a;
+    for (int k = 0; k < 3; ++k)
+      v.win[k] = static_cast<float>(a.win[k] + t * (b.win[k] - a.win[k]));
+    for (int k = 0; k < 4; ++k)
+      v.attr[kAttrColor + k] =
+          static_cast<float>(a.attr[kAttrColor + k] +
+                             t * (b.attr[kAttrColor + k] - a.attr[kAttrColor + k]));
+  };
+  const int64_t steps = static_cast<int64_t>(std::ceil(len));
+  const int64_t fac = modes.line_stipple_factor;
+  const uint32_t pattern = modes.line_stipple_pattern;
+  int64_t run_start = -1;
+  for (int64_t i = 0; i <= steps; ++i) {
+    const bool on = i < steps && ((pattern >> (((base + i) / fac) & 15)) & 1u) != 0;
+    if (on && run_start < 0) run_start = i;
+    if (!on && run_start >= 0) {
+      PVertex va, vb;
+      sub_vertex(static_cast<double>(run_start) / len, va);
+      sub_vertex(std::min(static_cast<double>(i) / len, 1.0), vb);
+      smooth_line(dc, ctx, va, vb, provoking);
+      run_start = -1;
+    }
+  }
+}
+
 void any_line(const DrawCall& dc, const FragCtx& ctx, const PVertex& a, const PVertex& b,
               const PVertex& provoking) {
-  if (dc.state->modes.line_smooth) return smooth_line(dc, ctx, a, b, provoking);
+  const RasterModes& modes = dc.state->modes;
+  if (modes.line_smooth) {
+    if (modes.line_stipple) return stippled_smooth_line(dc, ctx, a, b, provoking);
+    return smooth_line(dc, ctx, a, b, provoking);
+  }
   line(dc, ctx, a, b, provoking);
 }
 
