@@ -424,3 +424,52 @@ PINEDA_SCENE(rm_offset_points,
   default_modes();
   window_projection(frame);
 }
+
+PINEDA_SCENE(rm_stipple_outlines,
+             "Stippled LINE-mode outlines of every polygon type; stippled smooth lines",
+             .allowance = kLineAllowance, .why = kLineWhy) {
+  default_modes();
+  clear_frame(0.0f, 0.0f, 0.0f);
+  glEnable(GL_LINE_STIPPLE);
+  glLineStipple(2, 0x1c7f);
+  glPolygonMode(GL_FRONT_AND_BACK, GL_LINE);
+  const GLenum modes[6] = {GL_TRIANGLES, GL_TRIANGLE_STRIP, GL_TRIANGLE_FAN,
+                           GL_QUADS,     GL_QUAD_STRIP,     GL_POLYGON};
+  Rng rng(1111);
+  for (int i = 0; i < 6; ++i) {
+    const Panel p = panel(frame, i, 3, 3);
+    glBegin(modes[i]);
+    for (int k = 0; k < 8; ++k) {
+      palette_color(rng.below(16));
+      // A zig-zag band for strips, a ring for fans and polygons, loose cells otherwise.
+      float x, y;
+      if (modes[i] == GL_TRIANGLE_FAN || modes[i] == GL_POLYGON) {
+        const float a = 2.0f * kPi * static_cast<float>(k) / 8.0f;
+        x = p.w * 0.5f + (k == 0 && modes[i] == GL_TRIANGLE_FAN ? 0.0f : 30.0f * std::cos(a));
+        y = p.h * 0.5f + (k == 0 && modes[i] == GL_TRIANGLE_FAN ? 0.0f : 30.0f * std::sin(a));
+      } else {
+        x = 6.0f + 10.0f * static_cast<float>(k) + rng.range(-2.0f, 2.0f);
+        y = (k & 1) ? p.h - 8.0f - rng.range(0.0f, 10.0f) : 8.0f + rng.range(0.0f, 10.0f);
+      }
+      glVertex2f(snap(x), snap(y));
+    }
+    glEnd();
+  }
+  glPolygonMode(GL_FRONT_AND_BACK, GL_FILL);
+  // Stippled smooth lines: each dash is its own smooth segment.
+  glEnable(GL_LINE_SMOOTH);
+  glEnable(GL_BLEND);
+  glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
+  for (int i = 6; i < 9; ++i) {
+    const Panel p = panel(frame, i, 3, 3);
+    glLineStipple(i - 5, 0x33f1);
+    glLineWidth(1.0f + static_cast<float>(i - 6));
+    glBegin(i == 8 ? GL_LINE_LOOP : GL_LINE_STRIP);
+    for (int k = 0; k < 6; ++k) {
+      palette_color(rng.below(16));
+      glVertex2f(snap(rng.range(6.0f, p.w - 6.0f)), snap(rng.range(6.0f, p.h - 6.0f)));
+    }
+    glEnd();
+  }
+  default_modes();
+}
