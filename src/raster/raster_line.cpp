@@ -98,8 +98,7 @@ struct BlockBatch {
   }
 };
 
-// Aliased width (llvmpipe rounds half away from zero) and whether the segment needs the
-// general path (wide or stippled) rather than the plain 1-pixel one.
+// Aliased width: llvmpipe rounds the width to the nearest integer, halves away from zero.
 inline int aliased_width(const RasterModes& m) {
   return std::max(1, static_cast<int>(std::lround(m.line_width)));
 }
