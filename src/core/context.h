@@ -19,6 +19,7 @@
 #include "state/lighting_state.h"
 #include "state/texpipe_state.h"
 #include "texture/texture_object.h"
+#include "state/raster_mode_state.h"
 
 namespace pineda {
 
@@ -191,6 +192,7 @@ struct AttribFrame {
   bool color_sum = false; // fog: the COLOR_SUM enable (Table 6.11)
   GLenum read_buffer = GL_FRONT; // pixel (Table 6.27)
   TexPipeAttrib texpipe; // texture environment/generation/enables, fog (src/state/texenv.cpp)
+  RasterModeAttrib raster_modes{}; // line, point, polygon stipple/offset/smooth (raster_modes.cpp)
 };
 
 struct Context {
@@ -259,6 +261,7 @@ struct Context {
   GLenum shade_model = GL_SMOOTH;
   float point_size = 1.0f;
   float line_width = 1.0f;
+  RasterModeState raster_modes; // stipples, smoothing, point parameters, offset (raster_modes.cpp)
 
   // ---- per-fragment operations and framebuffer control (Tables 6.20-6.22) ----
   bool depth_test = false;

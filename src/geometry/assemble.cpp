@@ -58,7 +58,7 @@ struct IndexedFetch {
 
 template <class Sink> class Assembler {
 public:
-  Assembler(const DrawCall& dc, Sink& sink) : sink_(sink) {
+  Assembler(const DrawCall& dc, Sink& sink) : sink_(sink), stipple_counter_(dc.stipple_counter) {
     const RasterState& rs = *dc.state;
     init_face_state(face_, rs);
     init_clip_setup(clip_, rs);
@@ -115,7 +115,18 @@ private:
   void triangle_clipped(const PVertex& a, const PVertex& b, const PVertex& c, unsigned edges,
                         const PVertex& pv);
 
+  // GL 2.1 §3.4.2: the stipple counter restarts with each independent segment and with each
+  // strip or loop. Polygon outlines (LINE mode) restart it with every triangle, quad and
+  // polygon, within strips and fans too, as Mesa does (measured against llvmpipe).
+  void reset_stipple() {
+    if (stipple_counter_ != nullptr) *stipple_counter_ = 0.0f;
+  }
+  void reset_stipple_outline() {
+    if (!fill_fast_) reset_stipple();
+  }
+
   Sink& sink_;
+  float* stipple_counter_ = nullptr;
   FaceState face_;
   ClipSetup clip_;
   // Both faces FILL and one-sided colours: an unclipped triangle needs no edge flags, no
@@ -167,12 +178,15 @@ void Assembler<Sink>::run(GLenum mode, const Fetch& f, size_t count) {
       point(f(i));
     break;
   case GL_LINES:
-    for (size_t i = 0; i + 1 < count; i += 2)
+    for (size_t i = 0; i + 1 < count; i += 2) {
+      reset_stipple();
       line(f(i), f(i + 1));
+    }
     break;
   case GL_LINE_STRIP:
   case GL_LINE_LOOP:
     if (count < 2) break;
+    reset_stipple();
     for (size_t i = 1; i < count; ++i)
       line(f(i - 1), f(i));
     // The closing segment runs from the last vertex to the first, which as its second
@@ -182,6 +196,7 @@ void Assembler<Sink>::run(GLenum mode, const Fetch& f, size_t count) {
   case GL_TRIANGLES:
     // Table 2.12: vertex 3i provokes. Edge flags apply (§2.6.2).
     for (size_t i = 0; i + 2 < count; i += 3) {
+      reset_stipple_outline();
       const PVertex& a = f(i);
       const PVertex& b = f(i + 1);
       const PVertex& c = f(i + 2);
@@ -192,6 +207,7 @@ void Assembler<Sink>::run(GLenum mode, const Fetch& f, size_t count) {
     // §2.6.1: odd triangles are (A, B, current) with A and B swapped relative to the even
     // ones, which keeps the strip's orientation; vertex i+2 provokes (Table 2.12).
     for (size_t i = 0; i + 2 < count; ++i) {
+      reset_stipple_outline();
       if (i & 1)
         triangle(f(i + 1), f(i), f(i + 2), kEdgeAll);
       else
@@ -199,19 +215,30 @@ void Assembler<Sink>::run(GLenum mode, const Fetch& f, size_t count) {
     }
     break;
   case GL_TRIANGLE_FAN:
-    for (size_t i = 0; i + 2 < count; ++i)
+    for (size_t i = 0; i + 2 < count; ++i) {
+      reset_stipple_outline();
       triangle(f(0), f(i + 1), f(i + 2), kEdgeAll);
+    }
     break;
   case GL_QUADS:
     // Vertex 4i provokes (Table 2.12). Split as a fan from q0, along q0-q2, as llvmpipe does
     // (the conformance scene quad_split_colors pins it); the diagonal is not an edge.
     for (size_t i = 0; i + 3 < count; i += 4) {
+      reset_stipple_outline();
       const PVertex& q0 = f(i);
       const PVertex& q1 = f(i + 1);
       const PVertex& q2 = f(i + 2);
       const PVertex& q3 = f(i + 3);
-      triangle(q0, q1, q2, flag_bit(q0, kEdgeAB) | flag_bit(q1, kEdgeBC), q3);
-      triangle(q0, q2, q3, flag_bit(q2, kEdgeBC) | flag_bit(q3, kEdgeCA), q3);
+      if (fill_fast_) {
+        triangle(q0, q1, q2, flag_bit(q0, kEdgeAB) | flag_bit(q1, kEdgeBC), q3);
+        triangle(q0, q2, q3, flag_bit(q2, kEdgeBC) | flag_bit(q3, kEdgeCA), q3);
+      } else {
+        // Outlined (LINE or POINT on some face), Mesa's draw module splits along q1-q3, so the
+        // edges come in its order (which the line stipple counter shows): q3-q0, q0-q1, then
+        // q1-q2, q2-q3.
+        triangle(q0, q1, q3, flag_bit(q0, kEdgeAB) | flag_bit(q3, kEdgeCA), q3);
+        triangle(q1, q2, q3, flag_bit(q1, kEdgeAB) | flag_bit(q2, kEdgeBC), q3);
+      }
     }
     break;
   case GL_QUAD_STRIP:
@@ -222,6 +249,7 @@ void Assembler<Sink>::run(GLenum mode, const Fetch& f, size_t count) {
       const PVertex& v1 = f(i + 1);
       const PVertex& v2 = f(i + 2);
       const PVertex& v3 = f(i + 3);
+      reset_stipple_outline(); // each quad restarts an outline's stipple, as in Mesa
       triangle(v2, v0, v3, kEdgeAB | kEdgeCA);
       triangle(v0, v1, v3, kEdgeAB | kEdgeBC);
     }
@@ -230,6 +258,7 @@ void Assembler<Sink>::run(GLenum mode, const Fetch& f, size_t count) {
     // Vertex 1 provokes (Table 2.12). Fan around v0, each triangle v(i+1), v(i+2), v0 so the
     // provoking vertex is last; only the polygon's own edges are boundary edges.
     if (count < 3) break;
+    reset_stipple_outline();
     const PVertex& v0 = f(0);
     for (size_t i = 0; i + 2 < count; ++i) {
       const PVertex& a = f(i + 1);
@@ -266,6 +295,8 @@ void draw_primitives(const DrawCall& dc, GLenum mode, const PVertex* verts, cons
   prepare_fragments(*dc.state, *dc.fb, frag);
   DrawCall prepared = dc;
   prepared.frag = &frag;
+  float stipple_counter = 0.0f;
+  prepared.stipple_counter = &stipple_counter;
   RasterSink sink{prepared};
   assemble(sink, prepared, mode, verts, indices, count);
 }

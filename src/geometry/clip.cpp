@@ -38,6 +38,7 @@ void lerp_vertex(const ClipSetup& cs, const PVertex& p, const PVertex& q, double
     dst.clip[k] = base->clip[k] + s * (toward->clip[k] - base->clip[k]);
   for (int k = 0; k < cs.lerp_count; ++k)
     dst.attr[k] = base->attr[k] + s * (toward->attr[k] - base->attr[k]);
+  dst.point_size = base->point_size + s * (toward->point_size - base->point_size);
   dst.clipmask = 0;
   dst.edgeflag = 1;
 }

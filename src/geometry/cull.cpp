@@ -2,6 +2,8 @@
 // (§2.14.1) and flat-shaded polygon points (§2.14.7) need.
 #include "geometry/cull.h"
 
+#include <cmath>
+
 namespace pineda {
 
 void init_face_state(FaceState& fs, const RasterState& rs) {
@@ -15,6 +17,28 @@ void init_face_state(FaceState& fs, const RasterState& rs) {
   fs.flat = rs.flat;
   const int n = rs.attr_count;
   fs.copy_count = n < 0 ? 0 : (n > kMaxAttr ? kMaxAttr : n);
+  const RasterModes& m = rs.modes;
+  fs.offset_line = m.offset_line;
+  fs.offset_point = m.offset_point;
+  fs.offset_factor = m.offset_factor;
+  fs.offset_units_z = 2.0 * m.offset_units * m.depth_mrd;
+}
+
+double polygon_offset_z(const FaceState& fs, const PVertex* const* v, int n) {
+  double m = 0.0;
+  const double x0 = v[0]->win[0], y0 = v[0]->win[1], z0 = v[0]->win[2];
+  for (int i = 1; i + 1 < n; ++i) {
+    const double x1 = v[i]->win[0] - x0, y1 = v[i]->win[1] - y0, z1 = v[i]->win[2] - z0;
+    const double x2 = v[i + 1]->win[0] - x0, y2 = v[i + 1]->win[1] - y0;
+    const double z2 = v[i + 1]->win[2] - z0;
+    const double det = x1 * y2 - x2 * y1;
+    if (det == 0.0) continue;
+    const double dzdx = std::fabs((z1 * y2 - z2 * y1) / det);
+    const double dzdy = std::fabs((x1 * z2 - x2 * z1) / det);
+    m = dzdx > dzdy ? dzdx : dzdy;
+    break;
+  }
+  return fs.offset_factor * m + fs.offset_units_z;
 }
 
 int64_t polygon_area2(const PVertex* const* v, int n) {

@@ -22,7 +22,16 @@ struct FaceState {
   bool two_sided = false;
   bool flat = false;
   int copy_count = 4; // leading attribute floats a local vertex copy must carry
+  // GL 2.1 §3.5.5: polygon offset of polygons drawn in LINE and POINT mode, applied to the
+  // window z of their vertices (FILL is offset by raster_triangle).
+  bool offset_line = false, offset_point = false;
+  double offset_factor = 0.0;
+  double offset_units_z = 0.0; // units * r in window z (see polygon_offset_depth)
 };
+
+// The polygon offset in window z of the polygon v[0..n): the depth slopes of the plane
+// through its first three vertices that span an area.
+double polygon_offset_z(const FaceState& fs, const PVertex* const* v, int n);
 
 void init_face_state(FaceState& fs, const RasterState& rs);
 
@@ -78,6 +87,19 @@ void emit_polygon(const FaceState& fs, Sink& sink, const PVertex* const* v, cons
     copy_back_colored(fs, swapped_prov, provoking);
     vs = local;
     prov = &swapped_prov;
+  }
+
+  // Polygon offset for the outline and vertex modes: local copies with the z moved.
+  PVertex shifted[kMaxClipVerts];
+  const PVertex* shifted_ptr[kMaxClipVerts];
+  if ((mode == GL_LINE && fs.offset_line) || (mode == GL_POINT && fs.offset_point)) {
+    const float dz = static_cast<float>(polygon_offset_z(fs, vs, n));
+    for (int i = 0; i < n; ++i) {
+      copy_vertex(fs, shifted[i], *vs[i]);
+      shifted[i].win[2] += dz;
+      shifted_ptr[i] = &shifted[i];
+    }
+    vs = shifted_ptr;
   }
 
   if (mode == GL_FILL) {

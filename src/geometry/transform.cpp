@@ -2,7 +2,9 @@
 // coordinates through the composite matrix, clip codes, window coordinates for vertices that
 // need no clipping, and the vertex colours: lit (§2.14.1, light_eval.cpp) or the clamped
 // current colours, with the colour sum (§3.9) folded in unless texturing or fog is on; texture
-// and fog coordinates (texcoord.cpp).
+// and fog coordinates (texcoord.cpp); derived point sizes (GL 1.4 point parameters).
+#include <cmath>
+
 #include "geometry/clip.h"
 #include "geometry/geometry.h"
 #include "geometry/light_eval.h"
@@ -61,6 +63,12 @@ void draw_vertices(Context* ctx, GLenum mode, const InputVertex* in, size_t n,
   const TexVertexSetup& tvs = ctx->texpipe.vertex;
   const bool tex_live = rs.shade != nullptr && (tvs.units != 0 || tvs.fog);
   const bool two_sided = rs.two_sided;
+  // GL 1.4 point parameters (GL 2.1 §3.3 eq 3.1): with distance attenuation every vertex gets
+  // its derived size. Mesa takes the distance as |z| in eye coordinates rather than the
+  // Euclidean distance the spec names; Pineda follows llvmpipe.
+  const RasterModes& modes = rs.modes;
+  const bool attenuate = modes.point_attenuated;
+  const glm::mat4& mv = ctx->modelview.top();
 
   for (size_t i = 0; i < n; ++i) {
     const InputVertex& v = in[i];
@@ -91,6 +99,17 @@ void draw_vertices(Context* ctx, GLenum mode, const InputVertex* in, size_t n,
     }
     if (tex_live) tex_vertex(tvs, v.pos, v.normal, v.tex, v.fog, p.attr);
     p.edgeflag = v.edge;
+    p.point_size = 1.0f;
+    if (attenuate) {
+      const float ez = mv[0][2] * x + mv[1][2] * y + mv[2][2] * z + mv[3][2] * w;
+      const float d = ez < 0.0f ? -ez : ez;
+      const float* a = modes.point_attenuation;
+      const float size = modes.point_size / std::sqrt(a[0] + a[1] * d + a[2] * d * d);
+      // A NaN (attenuation <= 0) becomes the minimum.
+      p.point_size = size >= modes.point_size_min
+                         ? (size < modes.point_size_max ? size : modes.point_size_max)
+                         : modes.point_size_min;
+    }
   }
 
   Framebuffer& fb = ctx->fb;

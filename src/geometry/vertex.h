@@ -38,6 +38,8 @@ struct PVertex {
   float attr[kMaxAttr];
   uint32_t clipmask; // ClipBit set for this vertex
   uint32_t edgeflag; // GL edge flag (1 = boundary edge starts here)
+  // Derived point size (GL 2.1 §3.3 eq 3.1) when distance attenuation is on; 1 otherwise.
+  float point_size;
 };
 
 } // namespace pineda

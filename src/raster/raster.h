@@ -10,6 +10,7 @@
 
 #include "framebuffer/framebuffer.h"
 #include "geometry/vertex.h"
+#include "raster/raster_modes.h"
 
 namespace pineda {
 
@@ -96,6 +97,9 @@ struct RasterState {
   // Set while texturing or fog is on: primitives are then shaded per fragment. Derived state
   // owned by the context, valid while the draw runs.
   const ShadeSetup* shade = nullptr;
+  // Wide, stippled and smooth lines and points, polygon stipple and offset (GL 2.1 §3.3-§3.5;
+  // src/state/raster_modes.cpp derives them).
+  RasterModes modes;
 };
 
 struct FragCtx; // fragment/fragment_ops.h
@@ -107,6 +111,10 @@ struct DrawCall {
   // The fragment stage's setup for state and fb, made once per draw by draw_primitives. When
   // null (tests calling the rasterizers directly) each primitive makes its own.
   const FragCtx* frag = nullptr;
+  // The line stipple counter (GL 2.1 §3.4.2), owned by draw_primitives: primitive assembly
+  // resets it for each independent segment and at the start of a strip or loop, the line
+  // rasterizer advances it. Null: every segment starts at 0.
+  float* stipple_counter = nullptr;
 };
 
 // Primitive assembly, clipping, culling and rasterization of `count` vertices in `mode`

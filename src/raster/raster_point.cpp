@@ -1,8 +1,26 @@
-// Point rasterization, size 1, not antialiased (GL 2.1 §3.3.1): the window x and y are
-// truncated to integers and that one fragment takes the vertex's depth and colour.
+// Point rasterization (GL 2.1 §3.3).
+//
+// Size: the point size, or with distance attenuation the size the geometry stage derived per
+// vertex (PVertex::point_size, §3.3 eq 3.1, already clamped to POINT_SIZE_MIN/MAX).
+//
+// Aliased points (§3.3.1): the size is rounded to an integer w >= 1 (halves round down, as
+// llvmpipe rounds) and the fragments form the w x w square whose lower-left pixel is
+// floor(x) - (w-1)/2 for odd w and floor(x + 1/2) - w/2 for even w (the same for y), each
+// taking the vertex's depth and colour.
+//
+// Smooth points (§3.3.2) as llvmpipe draws them (Mesa's draw "aapoint" stage): a square of
+// radius r = size/2 (at least 1 for sizes <= 2 without attenuation) around the point; a
+// fragment whose centre lies at squared normalized distance d = ((cx-x)^2 + (cy-y)^2) / r^2
+// is produced when d <= 1. The stage means to multiply the alpha by a coverage ramp, 1 for
+// d <= k = (1 - 1/r)^2 and (1 - d) / (1 - k) beyond, but Mesa 22.3's shader selects the ramp
+// for d <= k and 1 beyond: the factor is (1 - d) / (1 - k) >= 1 inside k and 1 elsewhere, so
+// opaque colours give a solid aliased disc. The spec asks for the area of the pixel square
+// covered by the disc; Pineda follows llvmpipe (the factor multiplies the alpha, which is
+// then clamped).
 #include <cmath>
 
 #include "fragment/fragment_ops.h"
+#include "raster/frag_emit.h"
 #include "raster/raster.h"
 #include "raster/setup.h"
 #include "raster/setup_shade.h"
@@ -11,22 +29,68 @@ namespace pineda {
 
 namespace {
 
-void point(const FragCtx& ctx, const PVertex& p) {
+// GL 2.1 §3.3: with the point fade threshold, a point whose derived size falls below it is
+// drawn at the threshold size with its alpha scaled by (size / threshold)^2. Mesa's gallium
+// drivers do not implement the fade (the size is only clamped), and Pineda follows them.
+inline float point_size_of(const RasterModes& m, const PVertex& p) {
+  if (m.point_attenuated) return p.point_size;
+  return m.point_size;
+}
+
+void smooth_point(const FragCtx& ctx, const RasterModes& m, const PVertex& p, float size) {
+  const double r = (!m.point_attenuated && size <= 2.0f) ? 1.0 : 0.5 * size;
+  if (!(r > 0.0)) return;
+  const double x = p.win[0], y = p.win[1];
+  const double k = (1.0 - 1.0 / r) * (1.0 - 1.0 / r);
+  const double inv_r2 = 1.0 / (r * r);
+  // Centres inside [x - r, x + r) x [y - r, y + r) (the square's left and bottom edges are
+  // owned, as for polygons).
+  const int px0 = static_cast<int>(std::ceil(x - r - 0.5)),
+            px1 = static_cast<int>(std::ceil(x + r - 0.5)) - 1;
+  const int py0 = static_cast<int>(std::ceil(y - r - 0.5)),
+            py1 = static_cast<int>(std::ceil(y + r - 0.5)) - 1;
+  uint8_t rgba[4];
+  const_color(p, kAttrColor, rgba);
+  const float alpha = p.attr[kAttrColor + 3];
+  const double z = p.win[2] * ctx.depth_max;
+  for (int py = std::max(py0, ctx.clip_y0); py <= std::min(py1, ctx.clip_y1); ++py) {
+    const double dy = py + 0.5 - y;
+    for (int px = std::max(px0, ctx.clip_x0); px <= std::min(px1, ctx.clip_x1); ++px) {
+      const double dx = px + 0.5 - x;
+      const double d = (dx * dx + dy * dy) * inv_r2;
+      if (d > 1.0) continue;
+      const double cov = d <= k ? (1.0 - d) / (1.0 - k) : 1.0;
+      rgba[3] = color_to_unorm8(static_cast<float>(alpha * cov));
+      emit_fragment(ctx, px, py, z, rgba);
+    }
+  }
+}
+
+void point(const DrawCall& dc, const FragCtx& ctx, const PVertex& p) {
   if (ctx.noop) return;
+  const RasterModes& m = dc.state->modes;
+  const float size = point_size_of(m, p);
+  if (m.point_smooth) return smooth_point(ctx, m, p, size);
+  // Round to the nearest integer, halves down, at least 1 (llvmpipe's legacy points).
+  int w = 1;
+  if (size > 1.5f) w = static_cast<int>(std::min(std::ceil(size - 0.5f), kMaxPointSize));
   // "Truncating" for the (possibly negative, guard band) window coordinates means floor:
   // the fragment is the pixel whose square [x, x+1) x [y, y+1) contains the point.
-  const float fx = std::floor(p.win[0]), fy = std::floor(p.win[1]);
-  if (!(fx >= static_cast<float>(ctx.clip_x0) && fx <= static_cast<float>(ctx.clip_x1) &&
-        fy >= static_cast<float>(ctx.clip_y0) && fy <= static_cast<float>(ctx.clip_y1)))
+  const float ox = (w & 1) ? std::floor(p.win[0]) : std::floor(p.win[0] + 0.5f);
+  const float oy = (w & 1) ? std::floor(p.win[1]) : std::floor(p.win[1] + 0.5f);
+  const float x0 = ox - static_cast<float>(w / 2), y0 = oy - static_cast<float>(w / 2);
+  // Reject squares entirely outside the clip rectangle before converting to int.
+  if (!(x0 + static_cast<float>(w) > static_cast<float>(ctx.clip_x0) &&
+        x0 <= static_cast<float>(ctx.clip_x1) &&
+        y0 + static_cast<float>(w) > static_cast<float>(ctx.clip_y0) &&
+        y0 <= static_cast<float>(ctx.clip_y1)))
     return;
-  const int x = static_cast<int>(fx), y = static_cast<int>(fy);
+  const int x = static_cast<int>(x0), y = static_cast<int>(y0);
   FragInputs in;
   in.ox = x;
   in.oy = y;
   in.z.v0 = p.win[2] * ctx.depth_max;
   const_color(p, kAttrColor, in.const_color);
-  const int bx = x & ~(kBlockSize - 1), by = y & ~(kBlockSize - 1);
-  const uint64_t bit = uint64_t{1} << (8 * (y - by) + (x - bx));
   ShadeInputs si; // texturing and fog (fragment/shade.h)
   ShadePath shade = ShadePath::Const;
   if (ctx.shade != nullptr) {
@@ -34,16 +98,16 @@ void point(const FragCtx& ctx, const PVertex& p) {
     in.shade = &si;
     shade = ShadePath::PerFragment;
   }
-  ctx.fn[static_cast<int>(shade)](ctx, in, bx, by, bit);
+  emit_rect(ctx, in, ctx.fn[static_cast<int>(shade)], x, y, x + w - 1, y + w - 1);
 }
 
 } // namespace
 
 void raster_point(const DrawCall& dc, const PVertex& p) {
-  if (dc.frag != nullptr) return point(*dc.frag, p);
+  if (dc.frag != nullptr) return point(dc, *dc.frag, p);
   FragCtx ctx;
   prepare_fragments(*dc.state, *dc.fb, ctx);
-  point(ctx, p);
+  point(dc, ctx, p);
 }
 
 } // namespace pineda

@@ -88,7 +88,19 @@ inline uint64_t partial_mask32(const Edges32& v, const int64_t e[3]) {
 // columns the edges allow, so long thin triangles do not visit every block of their box.
 constexpr int kNarrowWidth = 32;
 
-void traverse(const TriEdges& te, const FragCtx& ctx, const FragInputs& in, BlockFn fn) {
+// GL 2.1 §3.5.2: the polygon stipple's coverage of the 8x8 block at (bx, by), bx a multiple of
+// 8: window pixel (x, y) survives when bit x mod 32 of row y mod 32 is set.
+inline uint64_t stipple_block_mask(const uint32_t* rows, int bx, int by) {
+  const int shift = bx & 31;
+  uint64_t m = 0;
+  for (int r = 0; r < kBlockSize; ++r)
+    m |= static_cast<uint64_t>((rows[(by + r) & 31] >> shift) & 0xffu) << (8 * r);
+  return m;
+}
+
+// `stipple`: the polygon stipple rows, or nullptr when stippling is off (one test per block).
+void traverse(const TriEdges& te, const FragCtx& ctx, const FragInputs& in, BlockFn fn,
+              const uint32_t* stipple) {
   constexpr int B = kBlockSize;
   // Offsets from a block's first pixel to its corner pixel where an edge function is largest
   // (reject if even that is negative) and smallest (accept if even that is non-negative).
@@ -143,6 +155,7 @@ void traverse(const TriEdges& te, const FragCtx& ctx, const FragInputs& in, Bloc
           const int c0 = std::max(te.minx - bx, 0), c1 = std::min(te.maxx - bx, B - 1);
           mask = partial_mask64(te, e, c0, c1, r0, r1);
         }
+        if (stipple != nullptr) mask &= stipple_block_mask(stipple, bx, by);
         if (mask != 0) fn(ctx, in, bx, by, mask);
       }
       for (int i = 0; i < 3; ++i) e[i] += te.e[i].sx * B;
@@ -168,7 +181,12 @@ void triangle(const DrawCall& dc, const FragCtx& ctx, const PVertex& a, const PV
     in.shade = &si;
     shade = ShadePath::PerFragment;
   }
-  traverse(te, ctx, in, ctx.fn[static_cast<int>(shade)]);
+  const RasterModes& modes = rs.modes;
+  // GL 2.1 §3.5.5: the offset moves the whole depth plane (the fragment stage clamps).
+  if (modes.offset_fill && ctx.needs_depth)
+    in.z.v0 += polygon_offset_depth(modes, in.z.dx, in.z.dy, ctx.depth_max);
+  traverse(te, ctx, in, ctx.fn[static_cast<int>(shade)],
+           modes.polygon_stipple ? modes.polygon_stipple_rows : nullptr);
 }
 
 } // namespace

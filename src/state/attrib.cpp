@@ -1,13 +1,11 @@
 // glPushAttrib / glPopAttrib (GL 2.1 §6.1.14 "Saving and Restoring State"): the server
 // attribute stack. Each group is the state whose "attribute" column in the GL 2.1 state tables
 // names it, restricted to the state Pineda has. Groups accepted but saving nothing yet, and
-// what each must grow to cover as the state is implemented (§6.1.14, Table 6.2):
-//   LINE_BIT: line smooth and stipple enables, stipple pattern and repeat, line width
-//     (Table 6.14); the width is the constant 1 until glLineWidth exists.
-//   POINT_BIT: point smooth enable, size, size limits, fade threshold, distance attenuation,
-//     sprite enables and coordinate origin (Table 6.14); the size is the constant 1.
-//   POLYGON_BIT also: polygon smooth and stipple enables, polygon offset factor, units and
-//     enables (Table 6.14). POLYGON_STIPPLE_BIT: the stipple pattern.
+// what each must grow to cover as the state is implemented (§6.1.14, Table 6.2). LINE_BIT,
+// POINT_BIT, POLYGON_STIPPLE_BIT and the stipple, smooth and offset state of POLYGON_BIT are
+// saved and restored by raster_modes.cpp (save_raster_modes / restore_raster_modes); FOG_BIT and
+// the environment, coordinate generation, enables and active unit of TEXTURE_BIT by texenv.cpp.
+//   POINT_BIT also: sprite enables and coordinate origin once point sprites exist.
 //   PIXEL_MODE_BIT also: pixel transfer scales and biases, maps, zoom (Tables 6.23-6.27).
 //   TEXTURE_BIT: bindings and texture object parameters (Tables 6.16-6.18); the environment,
 //     coordinate generation, enables and active unit are saved by texenv.cpp.
@@ -17,6 +15,7 @@
 //   write mask, current index and raster position once colour index and raster position exist.
 #include "core/api_util.h"
 #include "dispatch.h"
+#include "state/raster_modes_hooks.h"
 
 #include <algorithm>
 #include <array>
@@ -140,6 +139,7 @@ void save(const Context* c, AttribFrame& f) {
   if (m & GL_FOG_BIT) f.color_sum = c->lighting.color_sum;
   if (m & GL_PIXEL_MODE_BIT) f.read_buffer = c->read_buffer;
   texpipe_save_attrib(c, m, f.texpipe);
+  save_raster_modes(c, f.raster_modes);
 }
 
 // Restore the groups of `f` and return the derived state they invalidate.
@@ -263,6 +263,7 @@ uint32_t restore(Context* c, const AttribFrame& f) {
   }
   if (m & GL_PIXEL_MODE_BIT) c->read_buffer = f.read_buffer;
   dirty |= texpipe_restore_attrib(c, m, f.texpipe);
+  dirty |= restore_raster_modes(c, f.raster_modes, m);
   // GL 2.1 §2.14.3: while COLOR_MATERIAL is enabled the tracked material properties follow
   // the current colour, whichever of the two was restored.
   if ((m & (GL_CURRENT_BIT | GL_LIGHTING_BIT | GL_ENABLE_BIT)) && c->lighting.color_material) {

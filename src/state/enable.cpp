@@ -3,6 +3,7 @@
 // GL_INVALID_ENUM rather than being silently accepted.
 #include "core/api_util.h"
 #include "dispatch.h"
+#include "state/raster_modes_hooks.h"
 
 namespace pineda {
 
@@ -21,6 +22,10 @@ bool* capability(Context* ctx, GLenum cap, uint32_t* dirty) {
   if (cap >= GL_LIGHT0 && cap < GL_LIGHT0 + kMaxLights) {
     *dirty = kDirtyLighting;
     return &ctx->lighting.light[cap - GL_LIGHT0].enabled;
+  }
+  if (bool* flag = raster_mode_capability(ctx, cap)) { // raster_modes.cpp
+    *dirty = kDirtyRasterMode;
+    return flag;
   }
   switch (cap) {
   case GL_CULL_FACE: *dirty = kDirtyPolygon; return &ctx->cull_enabled;

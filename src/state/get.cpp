@@ -6,6 +6,7 @@
 
 #include "core/api_util.h"
 #include "dispatch.h"
+#include "state/raster_modes_hooks.h"
 
 namespace pineda {
 
@@ -101,6 +102,12 @@ bool get_values(Context* ctx, GLenum pname, Values& out) {
     case GL_FOG_COORD_ARRAY_STRIDE: out.add(a->stride); break;
     default: out.add(a->buffer); break;
     }
+    return true;
+  }
+  RasterModeValues rm; // point, line and polygon modes and their limits (raster_modes.cpp)
+  if (raster_mode_query(ctx, pname, rm)) {
+    out.kind = rm.is_float ? Kind::Float : Kind::Int;
+    for (int i = 0; i < rm.n; ++i) out.add(rm.v[i]);
     return true;
   }
   const Framebuffer& fb = ctx->fb;
@@ -303,19 +310,6 @@ bool get_values(Context* ctx, GLenum pname, Values& out) {
   // GL 1.2 DrawRangeElements recommendations: Pineda has no such limit; report large values.
   case GL_MAX_ELEMENTS_VERTICES:
   case GL_MAX_ELEMENTS_INDICES: out.add(1 << 20); return true;
-  // Points and lines are rasterized at size/width 1 only until wide ones are implemented.
-  case GL_ALIASED_POINT_SIZE_RANGE:
-  case GL_ALIASED_LINE_WIDTH_RANGE:
-  case GL_POINT_SIZE_RANGE:
-  case GL_LINE_WIDTH_RANGE:
-    out.kind = Kind::Float;
-    out.add(1), out.add(1);
-    return true;
-  case GL_POINT_SIZE_GRANULARITY:
-  case GL_LINE_WIDTH_GRANULARITY:
-    out.kind = Kind::Float;
-    out.add(0);
-    return true;
   default: {
     // Texture units, texture environment and generation, fog (src/state/texenv.cpp).
     int kind = 0;

@@ -5,6 +5,7 @@
 #include "core/context.h"
 #include "geometry/geometry.h"
 #include "geometry/light_eval.h"
+#include "state/raster_modes_hooks.h"
 
 namespace pineda {
 
@@ -97,6 +98,8 @@ void validate_state(Context* ctx) {
     // §2.14.1: back colours are computed and selected only with two-sided lighting on.
     rs.two_sided = ls.enabled && ls.two_side;
   }
+  // Wide, stippled and smooth lines and points, polygon stipple and offset (raster_modes.cpp).
+  if (dirty & (kDirtyRasterMode | kDirtyFramebuffer)) derive_raster_modes(ctx, rs.modes);
   // Texturing and fog: per-vertex and per-fragment setups, live attribute count.
   validate_texpipe(ctx, dirty);
   ctx->dirty = 0;
