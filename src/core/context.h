@@ -17,6 +17,7 @@
 #include "framebuffer/pixel_store.h"
 #include "raster/raster.h"
 #include "state/lighting_state.h"
+#include "state/select.h"
 
 namespace pineda {
 
@@ -181,6 +182,7 @@ struct AttribFrame {
   } hints{};
   bool color_sum = false; // fog: the COLOR_SUM enable (Table 6.11)
   GLenum read_buffer = GL_FRONT; // pixel (Table 6.27)
+  float accum_clear[4] = {};     // accum-buffer (Table 6.22)
 };
 
 struct Context {
@@ -296,6 +298,11 @@ struct Context {
   std::unordered_map<GLuint, std::unique_ptr<BufferObject>>& buffers; // shared->buffers
   std::vector<ClientAttribFrame> client_attrib_stack;
   std::vector<AttribFrame> attrib_stack; // glPushAttrib (src/state/attrib.cpp)
+
+  // ---- selection, feedback, occlusion queries, accumulation (src/state/select.h) ----
+  RenderModeState render_mode;
+  QueryState queries;
+  AccumState accum;
 
   // ---- derived state (validate.cpp) ----
   uint32_t dirty = kDirtyAll;

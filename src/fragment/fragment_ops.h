@@ -79,6 +79,9 @@ struct FragCtx {
   bool needs_color = false;  // the colour path or the alpha test reads the primitive's colour
   bool needs_depth = false;  // the depth path reads the primitive's z
   BlockFn fn[kShadePathCount] = {nullptr, nullptr}; // indexed by ShadePath
+  // Fragments that passed the stencil and depth tests, counted when key.count_samples
+  // (occlusion queries, GL 2.1 §4.1.7); draw_primitives hands the sum to the query.
+  mutable uint64_t samples_passed = 0;
 };
 
 // Fills ctx for one draw: the key, the surfaces and the selected block loops.

@@ -89,6 +89,10 @@ struct RasterState {
   // GL 2.1 §4.1.10: with the colour logic operation on, blending is off whatever BLEND says.
   bool logic_op = false;
   GLenum logic_op_mode = GL_COPY;
+
+  // Occlusion queries (GL 2.1 §4.1.7, src/state/query.cpp): a SAMPLES_PASSED query is
+  // active, so the fragment stage counts the fragments that pass the depth and stencil tests.
+  bool count_samples = false;
 };
 
 struct FragCtx; // fragment/fragment_ops.h
@@ -100,6 +104,8 @@ struct DrawCall {
   // The fragment stage's setup for state and fb, made once per draw by draw_primitives. When
   // null (tests calling the rasterizers directly) each primitive makes its own.
   const FragCtx* frag = nullptr;
+  // With RasterState::count_samples, draw_primitives adds the samples that passed here.
+  uint64_t* samples_passed = nullptr;
 };
 
 // Primitive assembly, clipping, culling and rasterization of `count` vertices in `mode`

@@ -90,6 +90,8 @@ void validate_state(Context* ctx) {
     // §2.14.1: back colours are computed and selected only with two-sided lighting on.
     rs.two_sided = ls.enabled && ls.two_side;
   }
+  // An active occlusion query makes the fragment stage count (GL 2.1 §4.1.7, query.cpp).
+  if (dirty & kDirtyRenderMode) rs.count_samples = ctx->queries.active != 0;
   // Only the primary colour is read by the fragment stage until texturing and fog exist
   // (transform.cpp folds the colour sum of §3.9 into it).
   rs.attr_count = 4;
