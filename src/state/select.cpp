@@ -118,43 +118,46 @@ void select_raster_hit(Context* ctx, float win_z) {
 
 bool select_state_values(Context* ctx, GLenum pname, double v[4], int* n, bool* normalized) {
   const RenderModeState& rm = ctx->render_mode;
-  *n = 1;
-  *normalized = false;
+  double x = 0;
   switch (pname) {
   case GL_RENDER_MODE:
-    v[0] = rm.mode;
-    return true;
+    x = rm.mode;
+    break;
   case GL_NAME_STACK_DEPTH:
-    v[0] = rm.name_depth;
-    return true;
+    x = rm.name_depth;
+    break;
   case GL_MAX_NAME_STACK_DEPTH:
-    v[0] = kMaxNameStackDepth;
-    return true;
+    x = kMaxNameStackDepth;
+    break;
   case GL_SELECTION_BUFFER_SIZE:
-    v[0] = rm.select_size;
-    return true;
+    x = rm.select_size;
+    break;
   case GL_FEEDBACK_BUFFER_SIZE:
-    v[0] = rm.feedback_size;
-    return true;
+    x = rm.feedback_size;
+    break;
   case GL_FEEDBACK_BUFFER_TYPE:
-    v[0] = rm.feedback_type;
-    return true;
+    x = rm.feedback_type;
+    break;
   // GL 2.1 Table 6.34: 16 signed bits per channel, as Mesa allocates for any request.
   case GL_ACCUM_RED_BITS:
   case GL_ACCUM_GREEN_BITS:
   case GL_ACCUM_BLUE_BITS:
   case GL_ACCUM_ALPHA_BITS:
-    v[0] = ctx->fb.accum != nullptr ? ctx->fb.accum_bits : 0;
-    return true;
+    x = ctx->fb.accum != nullptr ? ctx->fb.accum_bits : 0;
+    break;
   case GL_ACCUM_CLEAR_VALUE:
-    *n = 4;
-    *normalized = true;
     for (int k = 0; k < 4; ++k)
       v[k] = ctx->accum.clear[k];
+    *n = 4;
+    *normalized = true;
     return true;
   default:
-    return false;
+    return false; // *n and *normalized untouched
   }
+  v[0] = x;
+  *n = 1;
+  *normalized = false;
+  return true;
 }
 
 bool select_state_pointer(Context* ctx, GLenum pname, void** out) {
