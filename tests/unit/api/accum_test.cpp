@@ -205,4 +205,24 @@ TEST_F(Accum, NothingHappensInSelectMode) {
   EXPECT_EQ(px(0, 0)[0], 0);
 }
 
+TEST(AccumRgb, ThreeByteBuffer) {
+  OSMesaContext ctx = OSMesaCreateContextExt(OSMESA_RGB, 0, 0, 8, nullptr);
+  ASSERT_NE(ctx, nullptr);
+  std::vector<uint8_t> buf(4 * 4 * 3, 0);
+  ASSERT_EQ(OSMesaMakeCurrent(ctx, buf.data(), GL_UNSIGNED_BYTE, 4, 4), GL_TRUE);
+  EXPECT_EQ(get_int(GL_ACCUM_ALPHA_BITS), 16);
+  glClearColor(0.2f, 0.4f, 0.6f, 0.0f);
+  glClear(GL_COLOR_BUFFER_BIT);
+  glAccum(GL_LOAD, 1.0f);
+  glClearColor(0, 0, 0, 0);
+  glClear(GL_COLOR_BUFFER_BIT);
+  glAccum(GL_RETURN, 1.0f);
+  EXPECT_NEAR(buf[0], 51, 1);
+  EXPECT_NEAR(buf[1], 102, 1);
+  EXPECT_NEAR(buf[2], 153, 1);
+  EXPECT_EQ(glGetError(), static_cast<GLenum>(GL_NO_ERROR));
+  OSMesaMakeCurrent(nullptr, nullptr, 0, 0, 0);
+  OSMesaDestroyContext(ctx);
+}
+
 } // namespace
