@@ -129,7 +129,8 @@ void note_error(Result& r) {
 int run_scene(const scenes::Scene& scene, const std::string& out_path, int reps) {
   const scenes::SceneOptions& o = scene.options;
   Result result;
-  OSMesaContext ctx = OSMesaCreateContextExt(o.format, o.depth_bits, o.stencil_bits, 0, nullptr);
+  OSMesaContext ctx =
+      OSMesaCreateContextExt(o.format, o.depth_bits, o.stencil_bits, o.accum_bits, nullptr);
   if (!ctx) {
     result.status = "context_failed";
     result.detail = std::string("OSMesaCreateContextExt(") + format_name(o.format) + ", depth " +

@@ -28,6 +28,7 @@ struct SceneOptions {
   GLenum format = OSMESA_RGBA; // OSMESA_RGBA, OSMESA_BGRA, OSMESA_ARGB or OSMESA_RGB
   int depth_bits = 24;         // context depth bits passed to OSMesaCreateContextExt
   int stencil_bits = 0;        // context stencil bits passed to OSMesaCreateContextExt
+  int accum_bits = 0;          // context accumulation bits passed to OSMesaCreateContextExt
   bool y_up = true;            // OSMesaPixelStore(OSMESA_Y_UP, ...)
   double allowance = 0.5;      // percent of pixels allowed to differ from llvmpipe
   // Compare against softpipe instead of llvmpipe: only for scenes llvmpipe gets wrong.

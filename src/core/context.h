@@ -20,6 +20,7 @@
 #include "state/texpipe_state.h"
 #include "texture/texture_object.h"
 #include "state/raster_mode_state.h"
+#include "state/select.h"
 
 namespace pineda {
 
@@ -193,6 +194,7 @@ struct AttribFrame {
   GLenum read_buffer = GL_FRONT; // pixel (Table 6.27)
   TexPipeAttrib texpipe; // texture environment/generation/enables, fog (src/state/texenv.cpp)
   RasterModeAttrib raster_modes{}; // line, point, polygon stipple/offset/smooth (raster_modes.cpp)
+  float accum_clear[4] = {};     // accum-buffer (Table 6.22)
 };
 
 struct Context {
@@ -315,6 +317,11 @@ struct Context {
   std::unordered_map<GLuint, std::unique_ptr<BufferObject>>& buffers; // shared->buffers
   std::vector<ClientAttribFrame> client_attrib_stack;
   std::vector<AttribFrame> attrib_stack; // glPushAttrib (src/state/attrib.cpp)
+
+  // ---- selection, feedback, occlusion queries, accumulation (src/state/select.h) ----
+  RenderModeState render_mode;
+  QueryState queries;
+  AccumState accum;
 
   // ---- derived state (validate.cpp) ----
   uint32_t dirty = kDirtyAll;

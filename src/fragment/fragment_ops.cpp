@@ -435,6 +435,9 @@ void block_loop(const FragCtx& ctx, const FragInputs& in, int bx, int by, uint64
       m = depth_row<D>(ctx, in, bx, y, di, dj, m);
       if (m == 0) continue;
     }
+    // §4.1.7: SAMPLES_PASSED counts what survived the stencil and depth tests.
+    if constexpr (X)
+      if (ctx.key.count_samples) ctx.samples_passed += static_cast<unsigned>(std::popcount(m));
     if constexpr (C != ColorPath::None) {
       uint8_t* const row = ctx.color + static_cast<ptrdiff_t>(y) * ctx.color_stride +
                            static_cast<ptrdiff_t>(bx) * L::bpp;
@@ -605,7 +608,7 @@ void prepare_fragments(const RasterState& rs, const Framebuffer& fb, FragCtx& ct
   ctx.needs_color = k.color_path() != ColorPath::None || k.alpha_test;
   ctx.shade = ctx.needs_color ? rs.shade : nullptr;
   ctx.needs_depth = k.depth_test;
-  ctx.noop = (!ctx.needs_color && !ctx.needs_depth && !k.stencil_test) ||
+  ctx.noop = (!ctx.needs_color && !ctx.needs_depth && !k.stencil_test && !k.count_samples) ||
              ctx.clip_x0 > ctx.clip_x1 || ctx.clip_y0 > ctx.clip_y1;
   for (int s = 0; s < kShadePathCount; ++s)
     ctx.fn[s] = select_block_fn(k, static_cast<ShadePath>(s));

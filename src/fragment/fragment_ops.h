@@ -86,6 +86,9 @@ struct FragCtx {
   // Texturing, colour sum and fog per fragment (fragment/shade.h); set when the draw has
   // texturing or fog on and reads colour. Primitives then run ShadePath::PerFragment.
   const ShadeSetup* shade = nullptr;
+  // Fragments that passed the stencil and depth tests, counted when key.count_samples
+  // (occlusion queries, GL 2.1 §4.1.7); draw_primitives hands the sum to the query.
+  mutable uint64_t samples_passed = 0;
 };
 
 // Fills ctx for one draw: the key, the surfaces and the selected block loops.

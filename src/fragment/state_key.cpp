@@ -22,6 +22,7 @@ StateKey make_state_key(const RasterState& rs, const Framebuffer& fb) {
     k.color_mask &= k.all_channels();
   }
   k.alpha_test = rs.alpha_test && rs.alpha_func != GL_ALWAYS;
+  k.count_samples = rs.count_samples;
   // GL 2.1 §4.1.5: without a stencil buffer the test always passes and nothing is written.
   // A test that always passes and never writes is the same as no test.
   const bool stencil_writes =

@@ -58,8 +58,11 @@ struct StateKey {
   bool alpha_test = false;   // GL 2.1 §4.1.4, on and not ALWAYS
   bool stencil_test = false; // §4.1.5, on, a stencil buffer present, and able to change anything
   bool logic_op = false;     // §4.1.10 on colour, and not COPY (which is a plain store)
+  // An occlusion query is active (§4.1.7): the extended instances count the fragments that
+  // pass the stencil and depth tests, so instances without a query carry no counting code.
+  bool count_samples = false;
 
-  bool ext() const { return alpha_test || stencil_test || logic_op; }
+  bool ext() const { return alpha_test || stencil_test || logic_op || count_samples; }
 
   DepthPath depth_path() const;
   ColorPath color_path() const;

@@ -33,6 +33,11 @@ struct Framebuffer {
   uint8_t* stencil = nullptr;  // width*height, row 0 at the bottom, stride = width
   int stencil_bits = 0;        // 0 or 8
 
+  // Accumulation buffer (GL 2.1 §4.2.4): RGBA, each a signed 16-bit fixed-point value
+  // v / 32767 as Mesa stores it; width*4 values per row, row 0 at the bottom.
+  int16_t* accum = nullptr;
+  int accum_bits = 0; // 0 (none) or 16
+
   uint8_t* color_row(int y) const { return color + static_cast<ptrdiff_t>(y) * color_stride; }
   uint32_t depth_max() const {
     return depth_bits >= 32 ? 0xffffffffu : ((1u << depth_bits) - 1u);

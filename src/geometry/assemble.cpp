@@ -299,6 +299,7 @@ void draw_primitives(const DrawCall& dc, GLenum mode, const PVertex* verts, cons
   prepared.stipple_counter = &stipple_counter;
   RasterSink sink{prepared};
   assemble(sink, prepared, mode, verts, indices, count);
+  if (dc.samples_passed != nullptr) *dc.samples_passed += frag.samples_passed;
 }
 
 void draw_primitives_to(PrimitiveSink& sink, const DrawCall& dc, GLenum mode, const PVertex* verts,

@@ -56,7 +56,9 @@ void draw_vertices(Context* ctx, GLenum mode, const InputVertex* in, size_t n,
   // §3.9: with lighting on the colour sum always applies and the secondary colour is zero
   // unless the specular term is separate; otherwise COLOR_SUM adds the current secondary
   // colour.
-  const bool color_sum = lit ? lighting.setup.separate_specular : lighting.color_sum;
+  // Feedback returns the primary colour alone (GL 2.1 §5.3), so nothing is folded in there.
+  const bool color_sum = (lit ? lighting.setup.separate_specular : lighting.color_sum) &&
+                         render_mode_is_render(ctx);
   // With texturing or fog on, the fragment stage adds the secondary colour after the texture
   // environments (fragment/shade.cpp); otherwise it is folded in here.
   const bool fold_sum = color_sum && rs.shade == nullptr;
@@ -112,10 +114,17 @@ void draw_vertices(Context* ctx, GLenum mode, const InputVertex* in, size_t n,
     }
   }
 
+  // GL 2.1 §5.2, §5.3: in SELECT and FEEDBACK mode the primitives go to selection or
+  // feedback instead of the rasterizer.
+  if (!render_mode_is_render(ctx)) {
+    select_feedback_draw(ctx, in, out.data(), n, mode, indices, count);
+    return;
+  }
   Framebuffer& fb = ctx->fb;
   DrawCall dc;
   dc.state = &rs;
   dc.fb = &fb;
+  if (rs.count_samples) dc.samples_passed = &ctx->queries.samples_passed;
   draw_primitives(dc, mode, out.data(), indices, count);
 }
 

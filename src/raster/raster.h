@@ -100,6 +100,9 @@ struct RasterState {
   // Wide, stippled and smooth lines and points, polygon stipple and offset (GL 2.1 §3.3-§3.5;
   // src/state/raster_modes.cpp derives them).
   RasterModes modes;
+  // Occlusion queries (GL 2.1 §4.1.7, src/state/query.cpp): a SAMPLES_PASSED query is
+  // active, so the fragment stage counts the fragments that pass the depth and stencil tests.
+  bool count_samples = false;
 };
 
 struct FragCtx; // fragment/fragment_ops.h
@@ -115,6 +118,8 @@ struct DrawCall {
   // resets it for each independent segment and at the start of a strip or loop, the line
   // rasterizer advances it. Null: every segment starts at 0.
   float* stipple_counter = nullptr;
+  // With RasterState::count_samples, draw_primitives adds the samples that passed here.
+  uint64_t* samples_passed = nullptr;
 };
 
 // Primitive assembly, clipping, culling and rasterization of `count` vertices in `mode`

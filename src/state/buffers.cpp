@@ -74,7 +74,9 @@ void GLAPIENTRY Clear(GLbitfield mask) {
     record_error(ctx, GL_INVALID_VALUE, "glClear");
     return;
   }
-  if (ctx->fb.color == nullptr) return;
+  // GL 2.1 §5.2, §5.3: no framebuffer updates in SELECT and FEEDBACK mode.
+  if (ctx->fb.color == nullptr || !render_mode_is_render(ctx)) return;
+  if (mask & GL_ACCUM_BUFFER_BIT) accum_clear(ctx); // src/state/accum.cpp
   ClearState cs;
   for (int i = 0; i < 4; ++i) {
     cs.color[i] = ctx->clear_color[i];

@@ -81,6 +81,14 @@ bool get_values(Context* ctx, GLenum pname, Values& out) {
     for (int i = 0; i < tn; ++i) out.add(tv[i]);
     return true;
   }
+  {
+    // Selection, feedback and accumulation-buffer state (src/state/select.cpp).
+    bool normalized = false;
+    if (select_state_values(ctx, pname, out.v, &out.n, &normalized)) {
+      if (normalized) out.kind = Kind::Normalized;
+      return true;
+    }
+  }
   if (const ClientArray* a = array_for(ctx, pname)) {
     switch (pname) {
     case GL_VERTEX_ARRAY_SIZE:
@@ -286,10 +294,6 @@ bool get_values(Context* ctx, GLenum pname, Values& out) {
   case GL_ALPHA_BITS: out.add(fb.color ? fb.alpha_bits : 0); return true;
   case GL_DEPTH_BITS: out.add(fb.depth ? fb.depth_bits : 0); return true;
   case GL_STENCIL_BITS: out.add(fb.stencil ? fb.stencil_bits : 0); return true;
-  case GL_ACCUM_RED_BITS:
-  case GL_ACCUM_GREEN_BITS:
-  case GL_ACCUM_BLUE_BITS:
-  case GL_ACCUM_ALPHA_BITS:
   case GL_AUX_BUFFERS:
   case GL_INDEX_BITS: out.add(0); return true;
   case GL_RGBA_MODE: out.kind = Kind::Bool; out.add(1); return true;
@@ -414,6 +418,11 @@ void GLAPIENTRY GetDoublev(GLenum pname, GLdouble* params) {
 void GLAPIENTRY GetPointerv(GLenum pname, void** params) {
   PINEDA_CTX_OUTSIDE("glGetPointerv");
   const void* p = nullptr;
+  void* special = nullptr; // selection and feedback arrays (src/state/select.cpp)
+  if (select_state_pointer(ctx, pname, &special)) {
+    if (params != nullptr) *params = special;
+    return;
+  }
   switch (pname) {
   case GL_VERTEX_ARRAY_POINTER: p = ctx->arrays.vertex.pointer; break;
   case GL_COLOR_ARRAY_POINTER: p = ctx->arrays.color.pointer; break;

@@ -98,6 +98,8 @@ void validate_state(Context* ctx) {
     // §2.14.1: back colours are computed and selected only with two-sided lighting on.
     rs.two_sided = ls.enabled && ls.two_side;
   }
+  // An active occlusion query makes the fragment stage count (GL 2.1 §4.1.7, query.cpp).
+  if (dirty & kDirtyRenderMode) rs.count_samples = ctx->queries.active != 0;
   // Wide, stippled and smooth lines and points, polygon stipple and offset (raster_modes.cpp).
   if (dirty & (kDirtyRasterMode | kDirtyFramebuffer)) derive_raster_modes(ctx, rs.modes);
   // Texturing and fog: per-vertex and per-fragment setups, live attribute count.

@@ -35,6 +35,7 @@ struct OSMesaState {
   bool color_clamp = true;
   std::vector<uint32_t> depth;
   std::vector<uint8_t> stencil;
+  std::vector<int16_t> accum; // 4 values per pixel when accum_bits > 0
 };
 
 thread_local OSMesaState* t_current_osmesa = nullptr;
@@ -73,6 +74,8 @@ void attach_surfaces(OSMesaState* s) {
   fb.depth = s->depth_bits > 0 ? s->depth.data() : nullptr;
   fb.stencil_bits = s->stencil_bits;
   fb.stencil = s->stencil_bits > 0 ? s->stencil.data() : nullptr;
+  fb.accum_bits = s->accum_bits;
+  fb.accum = s->accum_bits > 0 ? s->accum.data() : nullptr;
   mark_dirty(&s->gl, kDirtyFramebuffer);
 }
 
@@ -87,7 +90,8 @@ OSMesaState* create(GLenum format, GLint depth_bits, GLint stencil_bits, GLint a
   // Mesa rounds the requested depth up to a supported size: 16, 24 or 32 bits.
   s->depth_bits = depth_bits <= 0 ? 0 : depth_bits <= 16 ? 16 : depth_bits <= 24 ? 24 : 32;
   s->stencil_bits = stencil_bits > 0 ? 8 : 0;
-  s->accum_bits = accum_bits > 0 ? accum_bits : 0;
+  // Mesa gives a 16-bit signed accumulation buffer for any positive request.
+  s->accum_bits = accum_bits > 0 ? 16 : 0;
   return s;
 }
 
@@ -170,6 +174,7 @@ OSMESA_EXPORT GLboolean OSMesaMakeCurrent(OSMesaContext ctx, void* buffer, GLenu
   try {
     if (s->depth_bits > 0) s->depth.resize(pixels);
     if (s->stencil_bits > 0) s->stencil.resize(pixels);
+    if (s->accum_bits > 0) s->accum.resize(4 * pixels);
   } catch (const std::bad_alloc&) {
     return GL_FALSE;
   }
