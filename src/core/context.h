@@ -16,6 +16,7 @@
 #include "framebuffer/framebuffer.h"
 #include "framebuffer/pixel_store.h"
 #include "raster/raster.h"
+#include "state/dlist_state.h"
 #include "state/lighting_state.h"
 
 namespace pineda {
@@ -74,11 +75,12 @@ struct BufferObject {
   bool ever_bound = false;
 };
 
-// The objects a share group of contexts has in common (GLX 1.4 §3.3.7 share lists): today the
-// buffer objects. Contexts of one group on different threads must not create or delete
+// The objects a share group of contexts has in common (GLX 1.4 §3.3.7 share lists): buffer
+// objects and display lists. Contexts of one group on different threads must not create or delete
 // objects concurrently (the container itself is not locked).
 struct SharedObjects {
   std::unordered_map<GLuint, std::unique_ptr<BufferObject>> buffers;
+  DisplayLists lists; // src/state/dlist.cpp
 };
 
 // glPushClientAttrib saves these (GL 2.1 §6.1.14, CLIENT_PIXEL_STORE_BIT and
@@ -181,6 +183,7 @@ struct AttribFrame {
   } hints{};
   bool color_sum = false; // fog: the COLOR_SUM enable (Table 6.11)
   GLenum read_buffer = GL_FRONT; // pixel (Table 6.27)
+  GLuint list_base = 0;          // list (Table 6.31)
 };
 
 struct Context {
@@ -296,6 +299,9 @@ struct Context {
   std::unordered_map<GLuint, std::unique_ptr<BufferObject>>& buffers; // shared->buffers
   std::vector<ClientAttribFrame> client_attrib_stack;
   std::vector<AttribFrame> attrib_stack; // glPushAttrib (src/state/attrib.cpp)
+
+  // ---- display lists (GL 2.1 §5.4), src/state/dlist.cpp ----
+  DisplayListState dlist;
 
   // ---- derived state (validate.cpp) ----
   uint32_t dirty = kDirtyAll;

@@ -14,7 +14,7 @@
 //   TEXTURE_BIT: active texture unit, bindings, texture object parameters, environment and
 //     coordinate generation (Tables 6.16-6.19). ENABLE_BIT: the texture and
 //     coordinate-generation enables then join enable_flags() below.
-//   LIST_BIT: the display-list base. EVAL_BIT: evaluator maps, grid and enables (Table 6.28).
+//   EVAL_BIT: evaluator maps, grid and enables (Table 6.28).
 //   ACCUM_BUFFER_BIT: the accumulation clear value. MULTISAMPLE_BIT: multisample enables and
 //   sample coverage (Table 6.15). COLOR_BUFFER_BIT, CURRENT_BIT also: index clear value and
 //   write mask, current index and raster position once colour index and raster position exist.
@@ -137,6 +137,7 @@ void save(const Context* c, AttribFrame& f) {
   }
   if (m & GL_FOG_BIT) f.color_sum = c->lighting.color_sum;
   if (m & GL_PIXEL_MODE_BIT) f.read_buffer = c->read_buffer;
+  if (m & GL_LIST_BIT) f.list_base = c->dlist.base;
 }
 
 // Restore the groups of `f` and return the derived state they invalidate.
@@ -259,6 +260,7 @@ uint32_t restore(Context* c, const AttribFrame& f) {
     dirty |= kDirtyLighting;
   }
   if (m & GL_PIXEL_MODE_BIT) c->read_buffer = f.read_buffer;
+  if (m & GL_LIST_BIT) c->dlist.base = f.list_base;
   // GL 2.1 §2.14.3: while COLOR_MATERIAL is enabled the tracked material properties follow
   // the current colour, whichever of the two was restored.
   if ((m & (GL_CURRENT_BIT | GL_LIGHTING_BIT | GL_ENABLE_BIT)) && c->lighting.color_material) {

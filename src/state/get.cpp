@@ -87,6 +87,11 @@ bool get_values(Context* ctx, GLenum pname, Values& out) {
     }
     return true;
   }
+  double list_value = 0;
+  if (query_display_list(ctx, pname, &list_value)) {
+    out.add(list_value);
+    return true;
+  }
   const Framebuffer& fb = ctx->fb;
   switch (pname) {
   // Current values (Table 6.5).
