@@ -3,6 +3,7 @@
 // COMPILE_AND_EXECUTE mode, lists whose vertices inherit the current colour, vertex arrays
 // dereferenced at compile time, and Material between Begin and End inside a list. Every
 // scene compiles its lists again in each repetition and deletes them at the end.
+#include "gear_geometry.h"
 #include "scene_util.h"
 
 #include <cmath>
@@ -26,69 +27,6 @@ void perspective(const Frame& f) {
 void material(GLenum pname, float r, float g, float b) {
   const GLfloat v[4] = {r, g, b, 1.0f};
   glMaterialfv(GL_FRONT, pname, v);
-}
-
-// A toothed wheel in the z = ±width/2 slab: flat front and back faces with teeth, the teeth's
-// outer faces with outward normals, and the smooth-shaded bore.
-void gear(float bore, float radius, float width, int teeth, float depth) {
-  const float r0 = bore, r1 = radius - depth / 2, r2 = radius + depth / 2;
-  const float step = 2 * kPi / static_cast<float>(teeth), quarter = step / 4;
-  const float z = width / 2;
-  glShadeModel(GL_FLAT);
-  for (int side = 0; side < 2; ++side) {
-    const float s = side == 0 ? 1.0f : -1.0f;
-    glNormal3f(0, 0, s);
-    glBegin(GL_QUAD_STRIP);
-    for (int i = 0; i <= teeth; ++i) {
-      const float a = static_cast<float>(i) * step;
-      glVertex3f(r0 * std::cos(a), r0 * std::sin(a), s * z);
-      glVertex3f(r1 * std::cos(a), r1 * std::sin(a), s * z);
-      if (i < teeth) {
-        glVertex3f(r0 * std::cos(a), r0 * std::sin(a), s * z);
-        glVertex3f(r1 * std::cos(a + 3 * quarter), r1 * std::sin(a + 3 * quarter), s * z);
-      }
-    }
-    glEnd();
-    glBegin(GL_QUADS);
-    for (int i = 0; i < teeth; ++i) {
-      const float a = static_cast<float>(i) * step;
-      const float c[4] = {a, a + quarter, a + 2 * quarter, a + 3 * quarter};
-      const float r[4] = {r1, r2, r2, r1};
-      // Front faces counter-clockwise seen from +z, back faces seen from -z.
-      for (int k = 0; k < 4; ++k) {
-        const int j = side == 0 ? k : 3 - k;
-        glVertex3f(r[j] * std::cos(c[j]), r[j] * std::sin(c[j]), s * z);
-      }
-    }
-    glEnd();
-  }
-  // The outer faces of the teeth, one normal per face.
-  glBegin(GL_QUAD_STRIP);
-  for (int i = 0; i < teeth; ++i) {
-    const float a = static_cast<float>(i) * step;
-    const float c[4] = {a, a + quarter, a + 2 * quarter, a + 3 * quarter};
-    const float r[4] = {r1, r2, r2, r1};
-    for (int k = 0; k < 4; ++k) {
-      const float x = r[k] * std::cos(c[k]), y = r[k] * std::sin(c[k]);
-      const int n = (k + 1) % 4;
-      const float dx = r[n] * std::cos(c[n]) - x, dy = r[n] * std::sin(c[n]) - y;
-      glNormal3f(dy, -dx, 0);
-      glVertex3f(x, y, z);
-      glVertex3f(x, y, -z);
-    }
-  }
-  glVertex3f(r1, 0, z);
-  glVertex3f(r1, 0, -z);
-  glEnd();
-  glShadeModel(GL_SMOOTH);
-  glBegin(GL_QUAD_STRIP);
-  for (int i = 0; i <= teeth; ++i) {
-    const float a = static_cast<float>(i) * step;
-    glNormal3f(-std::cos(a), -std::sin(a), 0);
-    glVertex3f(r0 * std::cos(a), r0 * std::sin(a), -z);
-    glVertex3f(r0 * std::cos(a), r0 * std::sin(a), z);
-  }
-  glEnd();
 }
 
 void lights_on() {
@@ -118,15 +56,15 @@ PINEDA_SCENE(dlist_gears, "Three lit gears drawn from display lists, as glxgears
   const GLuint first = glGenLists(3);
   glNewList(first, GL_COMPILE);
   material(GL_AMBIENT_AND_DIFFUSE, 0.8f, 0.1f, 0.0f);
-  gear(1.0f, 4.0f, 1.0f, 20, 0.7f);
+  gear_geometry(1.0f, 4.0f, 1.0f, 20, 0.7f);
   glEndList();
   glNewList(first + 1, GL_COMPILE);
   material(GL_AMBIENT_AND_DIFFUSE, 0.0f, 0.8f, 0.2f);
-  gear(0.5f, 2.0f, 2.0f, 10, 0.7f);
+  gear_geometry(0.5f, 2.0f, 2.0f, 10, 0.7f);
   glEndList();
   glNewList(first + 2, GL_COMPILE);
   material(GL_AMBIENT_AND_DIFFUSE, 0.2f, 0.2f, 1.0f);
-  gear(1.3f, 2.0f, 0.5f, 10, 0.7f);
+  gear_geometry(1.3f, 2.0f, 0.5f, 10, 0.7f);
   glEndList();
   const float angle = 17.0f;
   glTranslatef(0, 0, -40);

@@ -61,22 +61,55 @@ void attribs_of(const InputVertex& v, ListAttribs& a) {
   a.edge = v.edge != 0;
 }
 
-// The current value of each inherited attribute, into the leading vertices that inherit it.
-const InputVertex* inherit_current(Context* ctx, const PrimBlock& b) {
-  if (b.inherit_mask == 0) return b.verts.data();
-  std::vector<InputVertex>& s = ctx->fetch_scratch;
-  s.assign(b.verts.begin(), b.verts.end());
+ListAttribs current_attribs(const Context* ctx) {
+  ListAttribs a;
+  std::copy(ctx->cur_color, ctx->cur_color + 4, a.color);
+  std::copy(ctx->cur_color2, ctx->cur_color2 + 3, a.color2);
+  std::copy(ctx->cur_normal, ctx->cur_normal + 3, a.normal);
+  std::copy(ctx->cur_tex[0], ctx->cur_tex[0] + 4, a.tex);
+  a.edge = ctx->cur_edge;
+  return a;
+}
+
+bool same_attribs(const ListAttribs& x, const ListAttribs& y, uint32_t mask) {
+  return (!(mask & kListColor) || std::memcmp(x.color, y.color, sizeof x.color) == 0) &&
+         (!(mask & kListColor2) || std::memcmp(x.color2, y.color2, sizeof x.color2) == 0) &&
+         (!(mask & kListNormal) || std::memcmp(x.normal, y.normal, sizeof x.normal) == 0) &&
+         (!(mask & kListTex) || std::memcmp(x.tex, y.tex, sizeof x.tex) == 0) &&
+         (!(mask & kListEdge) || x.edge == y.edge);
+}
+
+// The current value of each inherited attribute into the leading vertices that inherit it,
+// unless they hold it already. The caller holds b.patch_mutex.
+void inherit_current(const Context* ctx, PrimBlock& b) {
+  const ListAttribs cur = current_attribs(ctx);
+  if (b.patched && same_attribs(cur, b.patched_values, b.inherit_mask)) return;
   for (uint32_t i = 0; i < b.inherit_count[0]; ++i)
-    std::copy(ctx->cur_color, ctx->cur_color + 4, s[i].color);
+    std::copy(cur.color, cur.color + 4, b.verts[i].color);
   for (uint32_t i = 0; i < b.inherit_count[1]; ++i)
-    std::copy(ctx->cur_color2, ctx->cur_color2 + 3, s[i].color2);
+    std::copy(cur.color2, cur.color2 + 3, b.verts[i].color2);
   for (uint32_t i = 0; i < b.inherit_count[2]; ++i)
-    std::copy(ctx->cur_normal, ctx->cur_normal + 3, s[i].normal);
+    std::copy(cur.normal, cur.normal + 3, b.verts[i].normal);
   for (uint32_t i = 0; i < b.inherit_count[3]; ++i)
-    std::copy(ctx->cur_tex[0], ctx->cur_tex[0] + 4, s[i].tex);
+    std::copy(cur.tex, cur.tex + 4, b.verts[i].tex);
   for (uint32_t i = 0; i < b.inherit_count[4]; ++i)
-    s[i].edge = ctx->cur_edge ? 1u : 0u;
-  return s.data();
+    b.verts[i].edge = cur.edge ? 1u : 0u;
+  b.patched_values = cur;
+  b.patched = true;
+}
+
+// Draws the block's vertices with the current values where they inherit them.
+void draw_block(Context* ctx, PrimBlock& b) {
+  std::unique_lock<std::mutex> lock(b.patch_mutex, std::defer_lock);
+  if (b.inherit_mask != 0) {
+    lock.lock();
+    inherit_current(ctx, b);
+  }
+  const size_t n = b.verts.size();
+  if (b.indices.empty())
+    draw_vertices(ctx, b.mode, b.verts.data(), n, nullptr, n);
+  else
+    draw_vertices(ctx, b.mode, b.verts.data(), n, b.indices.data(), b.indices.size());
 }
 
 // A Begin/End block executed call by call: when it is called between Begin and End (its
@@ -98,7 +131,7 @@ void replay_block_calls(const PrimBlock& b) {
 }
 
 void replay_block(const void* args) {
-  const PrimBlock* b;
+  PrimBlock* b;
   std::memcpy(&b, args, sizeof b);
   Context* ctx = current_context();
   if (ctx == nullptr) return;
@@ -107,19 +140,11 @@ void replay_block(const void* args) {
     if (ctx->begin_mode != kOutsideBeginEnd)
       return record_error(ctx, GL_INVALID_OPERATION,
                           b->indices.empty() ? "glDrawArrays" : "glDrawElements");
-    const InputVertex* v = inherit_current(ctx, *b);
-    if (b->indices.empty())
-      draw_vertices(ctx, b->mode, v, b->verts.size(), nullptr, b->verts.size());
-    else
-      draw_vertices(ctx, b->mode, v, b->verts.size(), b->indices.data(), b->indices.size());
-    return;
+    return draw_block(ctx, *b);
   }
   if (ctx->begin_mode != kOutsideBeginEnd || !b->has_end) return replay_block_calls(*b);
   // What Begin, the vertices and End do (§2.6.1), without the calls.
-  if (!b->verts.empty()) {
-    const InputVertex* v = inherit_current(ctx, *b);
-    draw_vertices(ctx, b->mode, v, b->verts.size(), nullptr, b->verts.size());
-  }
+  if (!b->verts.empty()) draw_block(ctx, *b);
   apply_attribs(b->final_mask, b->final_values);
 }
 

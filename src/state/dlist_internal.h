@@ -4,6 +4,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <mutex>
 #include <vector>
 
 #include "core/context.h"
@@ -13,7 +14,10 @@ namespace pineda {
 // A compiled primitive (GL 2.1 §5.4): the vertices of a Begin/End block, or of an array draw
 // whose arrays were dereferenced at compile time, ready for the geometry stage. Attributes the
 // list had not set when a vertex was compiled are taken from the current values when the list
-// executes: for attribute a, vertices [0, inherit_count[a]) inherit.
+// executes: for attribute a, vertices [0, inherit_count[a]) inherit. Those vertices are
+// rewritten in place when the current values differ from the ones they hold, under
+// `patch_mutex` (a shared list may execute on several threads), so that a list drawn again and
+// again with the same current values draws straight from `verts`.
 struct PrimBlock final : DlistObject {
   GLenum mode = GL_POINTS;
   bool arrays = false;  // DrawArrays/DrawElements: no Begin/End, current values untouched
@@ -25,6 +29,9 @@ struct PrimBlock final : DlistObject {
   // Begin/End blocks: the attributes set inside the block, current after it (§2.7).
   uint32_t final_mask = 0;
   ListAttribs final_values{};
+  std::mutex patch_mutex;
+  bool patched = false; // the inheriting vertices hold `patched_values`
+  ListAttribs patched_values{};
 };
 
 using ReplayFn = void (*)(const void* args);

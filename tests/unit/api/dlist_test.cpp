@@ -602,6 +602,25 @@ TEST_F(DList, VerticesCalledInsideBeginEnd) {
   EXPECT_EQ(pixel(kW - 4, kH - 4), 0xff00ff00u);
 }
 
+// Vertices that inherit the current colour take the one of each call, whichever came before.
+TEST_F(DList, InheritedColourFollowsEachCall) {
+  glNewList(1, GL_COMPILE);
+  glBegin(GL_TRIANGLES);
+  glVertex2f(-1, -1);
+  glVertex2f(1, -1);
+  glVertex2f(-1, 1);
+  glEnd();
+  glEndList();
+  const GLubyte colours[4][3] = {{255, 0, 0}, {0, 255, 0}, {0, 255, 0}, {255, 0, 0}};
+  for (const auto& c : colours) {
+    glColor3ubv(c);
+    glCallList(1);
+    EXPECT_EQ(pixel(4, 4), 0xff000000u | c[0] | (c[1] << 8));
+  }
+  glDrawArrays(GL_TRIANGLES, 0, 0);
+  EXPECT_EQ(glGetError(), static_cast<GLenum>(GL_NO_ERROR));
+}
+
 // A list whose block has no End: the End comes from the caller.
 TEST_F(DList, BlockWithoutEnd) {
   glNewList(1, GL_COMPILE);
