@@ -18,6 +18,12 @@
 
 namespace pineda {
 
+// Compiled vertices carry, and inherit at execution, every attribute of InputVertex: an
+// attribute added there must be added to ListAttribs, compile_vertex, inherit_current and
+// apply_attribs too.
+static_assert(sizeof(InputVertex) == 18 * sizeof(float) + sizeof(uint32_t),
+              "InputVertex changed: display lists must carry the new attribute (dlist.cpp)");
+
 namespace {
 
 constexpr size_t kWord = sizeof(uint64_t);

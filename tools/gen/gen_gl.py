@@ -686,6 +686,13 @@ def read_name_list(path, registry, what):
 
 POINTER_PARAM = re.compile(r'const (?:struct )?(\w+) ?\*')
 
+# Commands that set current vertex attributes or emit vertices. Display lists compile them into
+# vertex blocks and track which current values a list has set (src/state/dlist.cpp), so a saver
+# that merely records the call would leave that tracking stale: they need hand-written savers.
+ATTRIBUTE_COMMAND = re.compile(
+    r'gl(Vertex|Color|SecondaryColor|Normal|TexCoord|MultiTexCoord|VertexAttribI?L?)[1-4]N?'
+    r'[a-z]*v?(ARB|EXT|NV)?|gl(EdgeFlag|FogCoord|Index)[a-z]*v?(ARB|EXT)?')
+
 
 def generated_saver_problem(command):
     """Why no saver can be generated for `command`, or None when one can: every argument must
@@ -693,6 +700,9 @@ def generated_saver_problem(command):
     command must return nothing (commands that return values are never compiled)."""
     if command.returns_value():
         return 'it returns a value'
+    if ATTRIBUTE_COMMAND.fullmatch(command.name):
+        return ('it sets current vertex attributes, which compiled vertex blocks track '
+                '(src/state/dlist.cpp)')
     for (ctype, name), length in zip(command.params, command.lens):
         if '*' not in ctype:
             continue
