@@ -555,6 +555,35 @@ TEST_F(DListDraw, InheritedAndSetAttributes) {
   });
 }
 
+// COLOR_MATERIAL: colours inside the block feed the tracked material per vertex, and the
+// last one stays in the material after the block.
+TEST_F(DListDraw, ColorMaterial) {
+  expect_same(
+      [] {
+        lighting_setup();
+        glEnable(GL_COLOR_MATERIAL);
+        glColorMaterial(GL_FRONT_AND_BACK, GL_DIFFUSE);
+      },
+      [] {
+        glBegin(GL_TRIANGLE_STRIP);
+        glVertex2f(-1, -1);
+        glColor3f(1, 0, 0);
+        glVertex2f(1, -1);
+        glColor3f(0, 1, 0);
+        glVertex2f(-1, 1);
+        glColor3f(0, 0, 1);
+        glVertex2f(1, 1);
+        glColor3f(1, 1, 0);
+        glEnd();
+        glDisable(GL_COLOR_MATERIAL);
+        glBegin(GL_TRIANGLES); // lit with the material the last colour left
+        glVertex2f(-0.5f, -0.5f);
+        glVertex2f(0.5f, -0.5f);
+        glVertex2f(0, 0.5f);
+        glEnd();
+      });
+}
+
 // Material between Begin and End (the block then runs call by call) and vertices of a list
 // called between Begin and End.
 TEST_F(DListDraw, MaterialInsideBlock) {
