@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "api_fixture.h"
+#include "dispatch.h"
 
 namespace {
 
@@ -32,6 +33,24 @@ float modelview_x() {
   GLfloat m[16];
   glGetFloatv(GL_MODELVIEW_MATRIX, m);
   return m[12];
+}
+
+// The generated save table (src/api/dlist_*.txt): §5.4's immediate commands execute, the
+// others are saved by generated or hand-written savers.
+TEST(DListSaveTable, ImmediateGeneratedAndHandWritten) {
+  const pineda::Dispatch& save = pineda::kSaveDispatch;
+  EXPECT_EQ(save.GetIntegerv, &pineda::exec::GetIntegerv);
+  EXPECT_EQ(save.GenLists, &pineda::exec::GenLists);
+  EXPECT_EQ(save.EndList, &pineda::exec::EndList);
+  EXPECT_EQ(save.VertexPointer, &pineda::exec::VertexPointer);
+  EXPECT_EQ(save.PixelStorei, &pineda::exec::PixelStorei);
+  EXPECT_EQ(save.Flush, &pineda::exec::Flush);
+  EXPECT_NE(save.Rotatef, &pineda::exec::Rotatef);
+  EXPECT_NE(save.Enable, &pineda::exec::Enable);
+  EXPECT_NE(save.ListBase, &pineda::exec::ListBase);
+  EXPECT_EQ(save.Begin, &pineda::saver::Begin);
+  EXPECT_EQ(save.CallLists, &pineda::saver::CallLists);
+  EXPECT_EQ(save.Lightfv, &pineda::saver::Lightfv);
 }
 
 TEST_F(DList, Queries) {
