@@ -25,9 +25,13 @@ get_filename_component(PINEDA_SOURCE_ROOT ${CMAKE_CURRENT_LIST_DIR}/.. ABSOLUTE)
 set(PINEDA_GENERATED_DIR ${CMAKE_BINARY_DIR}/generated)
 set(PINEDA_GENERATOR ${PINEDA_SOURCE_ROOT}/tools/gen/gen_gl.py)
 set(PINEDA_ENTRY_POINTS ${PINEDA_SOURCE_ROOT}/src/api/entry_points.txt)
+# How each command behaves while a display list is compiled (GL 2.1 §5.4).
+set(PINEDA_DLIST_IMMEDIATE ${PINEDA_SOURCE_ROOT}/src/api/dlist_immediate.txt)
+set(PINEDA_DLIST_SAVERS ${PINEDA_SOURCE_ROOT}/src/api/dlist_savers.txt)
 
 set(PINEDA_GENERATED_SOURCES
   ${PINEDA_GENERATED_DIR}/dispatch_tables.cpp
+  ${PINEDA_GENERATED_DIR}/dlist_save.cpp
   ${PINEDA_GENERATED_DIR}/api_thunks.cpp
   ${PINEDA_GENERATED_DIR}/proc_table.cpp
   ${PINEDA_GENERATED_DIR}/enum_names.cpp)
@@ -49,9 +53,12 @@ add_custom_command(
   COMMAND ${Python3_EXECUTABLE} ${PINEDA_GENERATOR}
     --registry ${PINEDA_GL_XML}
     --entry-points ${PINEDA_ENTRY_POINTS}
+    --dlist-immediate ${PINEDA_DLIST_IMMEDIATE}
+    --dlist-savers ${PINEDA_DLIST_SAVERS}
     --out-dir ${PINEDA_GENERATED_DIR}
     --stamp ${PINEDA_GENERATE_STAMP}
-  DEPENDS ${PINEDA_GENERATOR} ${PINEDA_ENTRY_POINTS} ${PINEDA_GL_XML}
+  DEPENDS ${PINEDA_GENERATOR} ${PINEDA_ENTRY_POINTS} ${PINEDA_DLIST_IMMEDIATE}
+    ${PINEDA_DLIST_SAVERS} ${PINEDA_GL_XML}
   COMMENT "Generating the GL API layer from ${PINEDA_GL_XML}"
   VERBATIM)
 add_custom_target(pineda_generate DEPENDS ${PINEDA_GENERATE_STAMP})

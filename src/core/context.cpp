@@ -38,8 +38,12 @@ Context* current_context() {
 
 void set_current_context(Context* ctx) {
   t_current = ctx;
-  // GL 2.1 §2.1: without a current context GL commands are no-ops.
-  t_dispatch = ctx != nullptr ? &kExecDispatch : &kNoopDispatch;
+  // GL 2.1 §2.1: without a current context GL commands are no-ops. A context in the middle of
+  // compiling a display list (§5.4) keeps compiling on the thread it is made current on.
+  if (ctx == nullptr)
+    t_dispatch = &kNoopDispatch;
+  else
+    t_dispatch = ctx->dlist.list != nullptr ? &kSaveDispatch : &kExecDispatch;
 }
 
 void record_error(Context* ctx, GLenum err, const char* func, GLenum offending) {

@@ -16,6 +16,7 @@
 #include "framebuffer/framebuffer.h"
 #include "framebuffer/pixel_store.h"
 #include "raster/raster.h"
+#include "state/dlist_state.h"
 #include "state/lighting_state.h"
 #include "state/texpipe_state.h"
 #include "texture/texture_object.h"
@@ -79,8 +80,8 @@ struct BufferObject {
   bool ever_bound = false;
 };
 
-// The objects a share group of contexts has in common (GLX 1.4 §3.3.7 share lists): today the
-// buffer objects. Contexts of one group on different threads must not create or delete
+// The objects a share group of contexts has in common (GLX 1.4 §3.3.7 share lists): buffer
+// objects and display lists. Contexts of one group on different threads must not create or delete
 // objects concurrently (the container itself is not locked).
 struct SharedObjects {
   std::unordered_map<GLuint, std::unique_ptr<BufferObject>> buffers;
@@ -89,6 +90,7 @@ struct SharedObjects {
   // Bumped on every change of any texture image or parameter (also of default objects), so
   // views made by make_sampler_view (texture/sampler.h) know when to be remade.
   uint64_t texture_generation = 0;
+  DisplayLists lists; // src/state/dlist.cpp
 };
 
 // glPushClientAttrib saves these (GL 2.1 §6.1.14, CLIENT_PIXEL_STORE_BIT and
@@ -195,6 +197,7 @@ struct AttribFrame {
   TexPipeAttrib texpipe; // texture environment/generation/enables, fog (src/state/texenv.cpp)
   RasterModeAttrib raster_modes{}; // line, point, polygon stipple/offset/smooth (raster_modes.cpp)
   float accum_clear[4] = {};     // accum-buffer (Table 6.22)
+  GLuint list_base = 0;          // list (Table 6.31)
 };
 
 struct Context {
@@ -322,6 +325,8 @@ struct Context {
   RenderModeState render_mode;
   QueryState queries;
   AccumState accum;
+  // ---- display lists (GL 2.1 §5.4), src/state/dlist.cpp ----
+  DisplayListState dlist;
 
   // ---- derived state (validate.cpp) ----
   uint32_t dirty = kDirtyAll;

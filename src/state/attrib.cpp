@@ -9,7 +9,7 @@
 //   PIXEL_MODE_BIT also: pixel transfer scales and biases, maps, zoom (Tables 6.23-6.27).
 //   TEXTURE_BIT: bindings and texture object parameters (Tables 6.16-6.18); the environment,
 //     coordinate generation, enables and active unit are saved by texenv.cpp.
-//   LIST_BIT: the display-list base. EVAL_BIT: evaluator maps, grid and enables (Table 6.28).
+//   EVAL_BIT: evaluator maps, grid and enables (Table 6.28).
 //   MULTISAMPLE_BIT: multisample enables and sample coverage (Table 6.15). COLOR_BUFFER_BIT,
 //   CURRENT_BIT also: index clear value and
 //   write mask, current index and raster position once colour index and raster position exist.
@@ -141,6 +141,7 @@ void save(const Context* c, AttribFrame& f) {
   texpipe_save_attrib(c, m, f.texpipe);
   save_raster_modes(c, f.raster_modes);
   if (m & GL_ACCUM_BUFFER_BIT) copy_array(f.accum_clear, c->accum.clear);
+  if (m & GL_LIST_BIT) f.list_base = c->dlist.base;
 }
 
 // Restore the groups of `f` and return the derived state they invalidate.
@@ -266,6 +267,7 @@ uint32_t restore(Context* c, const AttribFrame& f) {
   dirty |= texpipe_restore_attrib(c, m, f.texpipe);
   dirty |= restore_raster_modes(c, f.raster_modes, m);
   if (m & GL_ACCUM_BUFFER_BIT) copy_array(c->accum.clear, f.accum_clear);
+  if (m & GL_LIST_BIT) c->dlist.base = f.list_base;
   // GL 2.1 §2.14.3: while COLOR_MATERIAL is enabled the tracked material properties follow
   // the current colour, whichever of the two was restored.
   if ((m & (GL_CURRENT_BIT | GL_LIGHTING_BIT | GL_ENABLE_BIT)) && c->lighting.color_material) {

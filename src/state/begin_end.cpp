@@ -2,24 +2,13 @@
 #include <cstdint>
 
 #include "core/api_util.h"
+#include "core/normalize.h"
 #include "dispatch.h"
 #include "geometry/geometry.h"
 
 namespace pineda {
 
 namespace {
-
-// GL 2.1 Table 2.9: integer colour and normal components map to [-1,1] or [0,1].
-inline float norm(GLubyte c) { return static_cast<float>(c) * (1.0f / 255.0f); }
-inline float norm(GLbyte c) { return (2.0f * c + 1.0f) * (1.0f / 255.0f); }
-inline float norm(GLushort c) { return static_cast<float>(c) * (1.0f / 65535.0f); }
-inline float norm(GLshort c) { return (2.0f * c + 1.0f) * (1.0f / 65535.0f); }
-inline float norm(GLuint c) { return static_cast<float>(static_cast<double>(c) / 4294967295.0); }
-inline float norm(GLint c) {
-  return static_cast<float>((2.0 * c + 1.0) / 4294967295.0);
-}
-inline float norm(GLfloat c) { return c; }
-inline float norm(GLdouble c) { return static_cast<float>(c); }
 
 inline void vertex(float x, float y, float z, float w) {
   Context* ctx = current_context();

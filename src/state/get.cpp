@@ -118,6 +118,11 @@ bool get_values(Context* ctx, GLenum pname, Values& out) {
     for (int i = 0; i < rm.n; ++i) out.add(rm.v[i]);
     return true;
   }
+  double list_value = 0;
+  if (query_display_list(ctx, pname, &list_value)) {
+    out.add(list_value);
+    return true;
+  }
   const Framebuffer& fb = ctx->fb;
   switch (pname) {
   // Current values (Table 6.5).

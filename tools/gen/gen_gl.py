@@ -1,8 +1,9 @@
 #!/usr/bin/env python3
 """Generates Pineda's GL API layer from the Khronos registry.
 
-Inputs: gl.xml (the Khronos registry) and src/api/entry_points.txt (the GL commands Pineda
-implements). Outputs, all under --out-dir:
+Inputs: gl.xml (the Khronos registry), src/api/entry_points.txt (the GL commands Pineda
+implements), src/api/dlist_immediate.txt and src/api/dlist_savers.txt (how each command behaves
+while a display list is compiled). Outputs, all under --out-dir:
 
   include/GL/pineda_gl_api.h    enums, prototypes and PFNGL...PROC typedefs of GL 1.0-1.5,
                                 GL_ARB_imaging and GL_ARB_multitexture (for <GL/gl.h>)
@@ -10,6 +11,8 @@ implements). Outputs, all under --out-dir:
                                 prototypes of GL 2.0-4.6 and the extensions (<GL/glext.h>)
   dispatch.h                    pineda::Dispatch, pineda::exec::* declarations, lookups
   dispatch_tables.cpp           kExecDispatch, kNoopDispatch, t_dispatch
+  dlist_save.cpp                kSaveDispatch (display-list compilation) and the generated
+                                savers: see DisplayListPlan
   api_thunks.cpp                the exported gl* entry points, which call through t_dispatch
   proc_table.cpp                sorted name -> thunk address table, lookup_gl_proc()
   enum_names.cpp                sorted value -> name table, enum_name()
@@ -111,8 +114,10 @@ class Command:
         self.name = proto.find('name').text
         self.ret = text_without_name(proto)
         self.params = []  # (type, name) pairs in order
+        self.lens = []  # the registry's len attribute of each parameter, or None
         for param in elem.findall('param'):
             self.params.append((text_without_name(param), param.find('name').text))
+            self.lens.append(param.get('len'))
         self.ptypes = [p.text for p in elem.iter('ptype')]
 
     @property
@@ -423,7 +428,7 @@ def cpp_prologue():
     return ['// %s' % GENERATED_NOTE]
 
 
-def gen_dispatch_h(commands):
+def gen_dispatch_h(commands, plan):
     out = cpp_prologue()
     out += [
         '// The dispatch interface between the exported gl* thunks and the implementation.',
@@ -432,6 +437,7 @@ def gen_dispatch_h(commands):
         '#include <GL/gl.h>',
         '#include <GL/glext.h>',
         '',
+        '#include <cstddef>',
         '#include <span>',
         '',
         'namespace pineda {',
@@ -448,8 +454,23 @@ def gen_dispatch_h(commands):
     out += [
         '}  // namespace exec',
         '',
+        '// Written by hand in src/state/dlist_save.cpp: the display-list savers that',
+        '// src/api/dlist_savers.txt names (commands whose arguments need more than a copy).',
+        'namespace saver {']
+    for c in plan.handwritten:
+        out.append('%s GLAPIENTRY %s(%s);' % (c.ret, c.short, c.param_list()))
+    out += [
+        '}  // namespace saver',
+        '',
         '// Every entry points at pineda::exec.',
         'extern const Dispatch kExecDispatch;',
+        '// The calling thread\'s table while its context compiles a display list (GL 2.1 §5.4):',
+        '// savers for the commands that are compiled, pineda::exec for those executed at once.',
+        'extern const Dispatch kSaveDispatch;',
+        '// Appends a command to the display list under construction (src/state/dlist.cpp):',
+        '// `replay` is called with a copy of the `size` bytes at `args` when the list executes.',
+        '// Returns true when the command must also be executed now (COMPILE_AND_EXECUTE).',
+        'bool dlist_record(void (*replay)(const void* args), const void* args, size_t size);',
         '// Every entry does nothing and returns 0: GL commands without a current context.',
         'extern const Dispatch kNoopDispatch;',
         '// The calling thread\'s table; &kNoopDispatch until a context is made current.',
@@ -639,6 +660,171 @@ def gen_exports_map(commands):
     return '\n'.join(out) + '\n'
 
 
+def read_name_list(path, registry, what):
+    """Reads one of the display-list classification files: one command name per line, '#'
+    comments. Names must be commands of gl.xml; returns {name: line number}."""
+    try:
+        with open(path, encoding='utf-8') as handle:
+            lines = handle.readlines()
+    except OSError as err:
+        fail('cannot read %s: %s' % (path, err))
+    names = {}
+    for number, line in enumerate(lines, 1):
+        name = line.split('#', 1)[0].strip()
+        if not name:
+            continue
+        where = '%s:%d' % (path, number)
+        if name not in registry.commands:
+            close = difflib.get_close_matches(name, list(registry.commands), 3)
+            hint = ' (did you mean %s?)' % ', '.join(close) if close else ''
+            fail("%s: '%s' is not a command in gl.xml%s" % (where, name, hint))
+        if name in names:
+            fail("%s: '%s' is listed twice in the %s list" % (where, name, what))
+        names[name] = number
+    return names
+
+
+POINTER_PARAM = re.compile(r'const (?:struct )?(\w+) ?\*')
+
+# Commands that set current vertex attributes or emit vertices. Display lists compile them into
+# vertex blocks and track which current values a list has set (src/state/dlist.cpp), so a saver
+# that merely records the call would leave that tracking stale: they need hand-written savers.
+ATTRIBUTE_COMMAND = re.compile(
+    r'gl(Vertex|Color|SecondaryColor|Normal|TexCoord|MultiTexCoord|VertexAttribI?L?)[1-4]N?'
+    r'[a-z]*v?(ARB|EXT|NV)?|gl(EdgeFlag|FogCoord|Index)[a-z]*v?(ARB|EXT)?')
+
+
+def generated_saver_problem(command):
+    """Why no saver can be generated for `command`, or None when one can: every argument must
+    be a scalar or a pointer to a fixed number (gl.xml len="3") of values to copy, and the
+    command must return nothing (commands that return values are never compiled)."""
+    if command.returns_value():
+        return 'it returns a value'
+    if ATTRIBUTE_COMMAND.fullmatch(command.name):
+        return ('it sets current vertex attributes, which compiled vertex blocks track '
+                '(src/state/dlist.cpp)')
+    for (ctype, name), length in zip(command.params, command.lens):
+        if '*' not in ctype:
+            continue
+        match = POINTER_PARAM.fullmatch(ctype)
+        if match is None or match.group(1) in ('void', 'GLvoid'):
+            return "its argument '%s' (%s) is not a pointer to values it reads" % (name, ctype)
+        if length is None or not length.isdigit():
+            return "its argument '%s' has the size len=\"%s\", not a fixed count" % (name, length)
+    return None
+
+
+class DisplayListPlan:
+    """How each command of entry_points.txt behaves while a display list is being compiled
+    (GL 2.1 §5.4). Exactly one of:
+      immediate    listed in src/api/dlist_immediate.txt: executed, not compiled (the save
+                   table points at pineda::exec);
+      handwritten  listed in src/api/dlist_savers.txt: pineda::saver::<Name> is written by hand
+                   (computed sizes, vertices, arrays, display-list calls);
+      generated    every other command: a saver that copies the arguments (and the len="N"
+                   arrays they point to) into the list and replays them through pineda::exec.
+    A command that fits none of them stops the build with a message saying what to do."""
+
+    def __init__(self, commands, registry, immediate_path, savers_path):
+        immediate = read_name_list(immediate_path, registry, 'immediate')
+        savers = read_name_list(savers_path, registry, 'hand-written saver')
+        both = sorted(set(immediate) & set(savers))
+        if both:
+            fail('%s and %s both list %s: a command is either executed immediately or saved'
+                 % (immediate_path, savers_path, ', '.join(both)))
+        implemented = {c.name for c in commands}
+        stray = sorted(set(savers) - implemented)
+        if stray:
+            fail('%s lists %s, which src/api/entry_points.txt does not: a hand-written saver '
+                 'needs the command it saves' % (savers_path, ', '.join(stray)))
+        self.immediate, self.handwritten, self.generated = [], [], []
+        problems = []
+        for c in commands:
+            if c.name in immediate:
+                self.immediate.append(c)
+            elif c.name in savers:
+                self.handwritten.append(c)
+            else:
+                problem = generated_saver_problem(c)
+                if problem is None:
+                    self.generated.append(c)
+                else:
+                    problems.append('  %s: %s' % (c.name, problem))
+        if problems:
+            fail('display lists (GL 2.1 §5.4) cannot compile these commands of '
+                 'src/api/entry_points.txt:\n%s\nFor each, either add it to '
+                 'src/api/dlist_immediate.txt if §5.4 executes it immediately (Gen*, Delete*, '
+                 'Is*, Get*, client state, ...), or write pineda::saver::<Name> in '
+                 'src/state/dlist_save.cpp (copying the data it points to) and add it to '
+                 'src/api/dlist_savers.txt.' % '\n'.join(problems))
+
+
+def saver_args_struct(c):
+    """The members of the argument record of a generated saver: scalars as they are, fixed
+    arrays inline plus a flag that keeps a null pointer null."""
+    members = []
+    for (ctype, name), length in zip(c.params, c.lens):
+        if '*' in ctype:
+            element = POINTER_PARAM.fullmatch(ctype).group(1)
+            members.append('  %s %s[%s];' % (element, name, length))
+            members.append('  bool %s_null;' % name)
+        else:
+            members.append('  %s;' % declarator(ctype, name))
+    return members
+
+
+def gen_dlist_save(plan, commands):
+    out = cpp_prologue()
+    out += ['// Display-list compilation (GL 2.1 §5.4): kSaveDispatch and the generated savers.',
+            '// A generated saver copies its arguments into the list under construction and,',
+            '// in COMPILE_AND_EXECUTE mode, executes the command too; its replay function',
+            '// calls pineda::exec with the copy. Pointers to len="N" arrays are dereferenced',
+            '// now (§5.4: "pointers ... are dereferenced when the command is issued").']
+    out += SOURCE_INCLUDES
+    out += ['#include <cstring>', '', 'namespace pineda {', '', 'namespace {', '']
+    for c in plan.generated:
+        args = c.arg_list()
+        if not c.params:
+            out += ['void replay_%s(const void*) { exec::%s(); }' % (c.short, c.short),
+                    'void GLAPIENTRY save_%s() {' % c.short,
+                    '  if (dlist_record(&replay_%s, nullptr, 0)) exec::%s();' % (c.short, c.short),
+                    '}', '']
+            continue
+        out += ['struct Args%s {' % c.short] + saver_args_struct(c) + ['};', '']
+        call = []
+        for (ctype, name), _ in zip(c.params, c.lens):
+            call.append('a.%s_null ? nullptr : a.%s' % (name, name) if '*' in ctype
+                        else 'a.%s' % name)
+        out += ['void replay_%s(const void* p) {' % c.short,
+                '  Args%s a;' % c.short,
+                '  std::memcpy(&a, p, sizeof a);',
+                '  exec::%s(%s);' % (c.short, ', '.join(call)),
+                '}', '',
+                'void GLAPIENTRY save_%s(%s) {' % (c.short, c.param_list()),
+                '  Args%s a{};' % c.short]
+        for (ctype, name), _ in zip(c.params, c.lens):
+            if '*' in ctype:
+                out += ['  a.%s_null = %s == nullptr;' % (name, name),
+                        '  if (%s != nullptr) std::memcpy(a.%s, %s, sizeof a.%s);'
+                        % (name, name, name, name)]
+            else:
+                out.append('  a.%s = %s;' % (name, name))
+        out += ['  if (dlist_record(&replay_%s, &a, sizeof a)) exec::%s(%s);'
+                % (c.short, c.short, args), '}', '']
+    out += ['}  // namespace', '', 'const Dispatch kSaveDispatch = {']
+    immediate = {c.name for c in plan.immediate}
+    handwritten = {c.name for c in plan.handwritten}
+    for c in commands:
+        if c.name in immediate:
+            out.append('    .%s = &exec::%s,' % (c.short, c.short))
+        elif c.name in handwritten:
+            out.append('    .%s = &saver::%s,' % (c.short, c.short))
+        else:
+            out.append('    .%s = &save_%s,' % (c.short, c.short))
+    out += ['};', '', '}  // namespace pineda']
+    return '\n'.join(out) + '\n'
+
+
 def write_if_different(path, content):
     """Leaves an unchanged file alone so that its timestamp does not trigger rebuilds."""
     try:
@@ -658,17 +844,23 @@ def main():
     parser = argparse.ArgumentParser(description=__doc__.split('\n', 1)[0])
     parser.add_argument('--registry', required=True, help='path of gl.xml')
     parser.add_argument('--entry-points', required=True, help='path of entry_points.txt')
+    parser.add_argument('--dlist-immediate', required=True,
+                        help='path of dlist_immediate.txt (commands display lists execute at once)')
+    parser.add_argument('--dlist-savers', required=True,
+                        help='path of dlist_savers.txt (commands with hand-written savers)')
     parser.add_argument('--out-dir', required=True, help='directory for the generated files')
     parser.add_argument('--stamp', help='file to touch after a successful run (for the build)')
     args = parser.parse_args()
 
     registry = Registry(args.registry)
     commands = read_entry_points(args.entry_points, registry)
+    plan = DisplayListPlan(commands, registry, args.dlist_immediate, args.dlist_savers)
     headers = HeaderWriter(registry)
     outputs = {
         'include/GL/pineda_gl_api.h': headers.gl_api(),
         'include/GL/pineda_glext_api.h': headers.glext_api(),
-        'dispatch.h': gen_dispatch_h(commands),
+        'dispatch.h': gen_dispatch_h(commands, plan),
+        'dlist_save.cpp': gen_dlist_save(plan, commands),
         'dispatch_tables.cpp': gen_dispatch_tables(commands),
         'api_thunks.cpp': gen_api_thunks(commands),
         'proc_table.cpp': gen_proc_table(commands),

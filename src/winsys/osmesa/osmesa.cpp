@@ -21,6 +21,9 @@ namespace {
 constexpr GLint kMaxSize = kMaxViewportDim;
 
 struct OSMesaState {
+  // A context of its own share group, or of the group of the `sharelist` context (buffer
+  // objects and display lists, as Mesa's OSMesa shares them).
+  explicit OSMesaState(std::shared_ptr<SharedObjects> objects) : gl(std::move(objects)) {}
   Context gl;
   GLenum format = OSMESA_RGBA;
   int depth_bits = 0;
@@ -79,12 +82,15 @@ void attach_surfaces(OSMesaState* s) {
   mark_dirty(&s->gl, kDirtyFramebuffer);
 }
 
-OSMesaState* create(GLenum format, GLint depth_bits, GLint stencil_bits, GLint accum_bits) {
+OSMesaState* create(GLenum format, GLint depth_bits, GLint stencil_bits, GLint accum_bits,
+                    OSMesaState* share) {
   // Pineda renders 8-bit RGBA, BGRA, ARGB and RGB; BGR, 565 and colour index are refused.
   if (format != OSMESA_RGBA && format != OSMESA_BGRA && format != OSMESA_ARGB &&
       format != OSMESA_RGB)
     return nullptr;
-  auto* s = new (std::nothrow) OSMesaState();
+  std::shared_ptr<SharedObjects> objects =
+      share != nullptr ? share->gl.shared : std::make_shared<SharedObjects>();
+  auto* s = new (std::nothrow) OSMesaState(std::move(objects));
   if (s == nullptr) return nullptr;
   s->format = format;
   // Mesa rounds the requested depth up to a supported size: 16, 24 or 32 bits.
@@ -102,8 +108,9 @@ using pineda::OSMesaState;
 
 OSMESA_EXPORT OSMesaContext OSMesaCreateContextExt(GLenum format, GLint depthBits,
                                                    GLint stencilBits, GLint accumBits,
-                                                   OSMesaContext /*sharelist*/) {
-  return reinterpret_cast<OSMesaContext>(pineda::create(format, depthBits, stencilBits, accumBits));
+                                                   OSMesaContext sharelist) {
+  return reinterpret_cast<OSMesaContext>(pineda::create(format, depthBits, stencilBits, accumBits,
+                                                        reinterpret_cast<OSMesaState*>(sharelist)));
 }
 
 OSMESA_EXPORT OSMesaContext OSMesaCreateContext(GLenum format, OSMesaContext sharelist) {
