@@ -15,6 +15,7 @@
 
 #include "framebuffer/framebuffer.h"
 #include "framebuffer/pixel_store.h"
+#include "pixel/transfer.h"
 #include "raster/raster.h"
 #include "state/lighting_state.h"
 
@@ -276,6 +277,9 @@ struct Context {
   // window-system layer that gives the context a back buffer sets both to GL_BACK.
   GLenum draw_buffer = GL_FRONT;
   GLenum read_buffer = GL_FRONT;
+
+  // ---- pixel transfer, pixel maps and zoom (GL 2.1 §3.6.3, §3.6.4), src/state/pixel.cpp ----
+  PixelTransfer pixel_transfer;
 
   // ---- hints (Table 6.38) ----
   GLenum hint_perspective = GL_DONT_CARE;
