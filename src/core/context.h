@@ -15,6 +15,7 @@
 
 #include "framebuffer/framebuffer.h"
 #include "framebuffer/pixel_store.h"
+#include "pixel/raster_pos.h"
 #include "pixel/transfer.h"
 #include "raster/raster.h"
 #include "state/lighting_state.h"
@@ -280,6 +281,8 @@ struct Context {
 
   // ---- pixel transfer, pixel maps and zoom (GL 2.1 §3.6.3, §3.6.4), src/state/pixel.cpp ----
   PixelTransfer pixel_transfer;
+  // The current raster position (GL 2.1 §2.13), src/state/raster_pos.cpp.
+  RasterPos raster_pos;
 
   // ---- hints (Table 6.38) ----
   GLenum hint_perspective = GL_DONT_CARE;

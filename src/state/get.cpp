@@ -10,6 +10,9 @@
 namespace pineda {
 
 bool query_enabled(Context* ctx, GLenum cap, bool* value); // enable.cpp
+// Pixel transfer, pixel map sizes, zoom and raster position (pixel.cpp): the number of values
+// written to v (0: not a pixel query) and their kind as the Kind enum's index.
+int pixel_query(const Context* ctx, GLenum pname, double* v, int* kind);
 
 namespace {
 
@@ -64,6 +67,10 @@ bool get_values(Context* ctx, GLenum pname, Values& out) {
   if (query_enabled(ctx, pname, &enabled)) {
     out.kind = Kind::Bool;
     out.add(enabled ? 1 : 0);
+    return true;
+  }
+  if (int kind = 0; (out.n = pixel_query(ctx, pname, out.v, &kind)) > 0) {
+    out.kind = static_cast<Kind>(kind);
     return true;
   }
   if (const ClientArray* a = array_for(ctx, pname)) {
