@@ -130,6 +130,7 @@ struct AttribFrame {
   struct Current { // current (Table 6.5)
     float color[4], color2[4], normal[3], tex[kMaxTexUnits][4];
     bool edge;
+    RasterPos raster; // the current raster position and its data (§2.13)
   } current{};
   struct Enables { // enable: every flag of enable_flags() in attrib.cpp, in that order
     bool flag[kMaxClipPlanes + kMaxLights + 16];
@@ -183,6 +184,11 @@ struct AttribFrame {
   } hints{};
   bool color_sum = false; // fog: the COLOR_SUM enable (Table 6.11)
   GLenum read_buffer = GL_FRONT; // pixel (Table 6.27)
+  struct PixelMode { // pixel (Tables 6.24-6.27): the transfer modes and zoom, not the maps
+    bool map_color, map_stencil;
+    int index_shift, index_offset;
+    float scale[4], bias[4], depth_scale, depth_bias, zoom_x, zoom_y;
+  } pixel{};
 };
 
 struct Context {

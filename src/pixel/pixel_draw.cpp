@@ -25,6 +25,7 @@ void group_spans(int count, int first, float origin, float zoom, std::vector<int
   lo.resize(static_cast<size_t>(count));
   hi.resize(static_cast<size_t>(count));
   const auto pixel = [](double edge) {
+    if (std::isnan(edge)) return 0; // spans of NaN edges are empty
     const double v = std::ceil(edge - 0.5);
     return static_cast<int>(std::clamp(v, -1073741824.0, 1073741824.0));
   };

@@ -10,14 +10,13 @@
 //     sprite enables and coordinate origin (Table 6.14); the size is the constant 1.
 //   POLYGON_BIT also: polygon smooth and stipple enables, polygon offset factor, units and
 //     enables (Table 6.14). POLYGON_STIPPLE_BIT: the stipple pattern.
-//   PIXEL_MODE_BIT also: pixel transfer scales and biases, maps, zoom (Tables 6.23-6.27).
 //   TEXTURE_BIT: active texture unit, bindings, texture object parameters, environment and
 //     coordinate generation (Tables 6.16-6.19). ENABLE_BIT: the texture and
 //     coordinate-generation enables then join enable_flags() below.
 //   LIST_BIT: the display-list base. EVAL_BIT: evaluator maps, grid and enables (Table 6.28).
 //   ACCUM_BUFFER_BIT: the accumulation clear value. MULTISAMPLE_BIT: multisample enables and
 //   sample coverage (Table 6.15). COLOR_BUFFER_BIT, CURRENT_BIT also: index clear value and
-//   write mask, current index and raster position once colour index and raster position exist.
+//   write mask, current index once colour index exists.
 #include "core/api_util.h"
 #include "dispatch.h"
 
@@ -61,6 +60,7 @@ void save(const Context* c, AttribFrame& f) {
     for (int u = 0; u < kMaxTexUnits; ++u)
       copy_array(f.current.tex[u], c->cur_tex[u]);
     f.current.edge = c->cur_edge;
+    f.current.raster = c->raster_pos;
   }
   if (m & GL_ENABLE_BIT) {
     const auto flags = enable_flags(const_cast<Context*>(c));
@@ -136,7 +136,21 @@ void save(const Context* c, AttribFrame& f) {
                c->hint_texture_compression};
   }
   if (m & GL_FOG_BIT) f.color_sum = c->lighting.color_sum;
-  if (m & GL_PIXEL_MODE_BIT) f.read_buffer = c->read_buffer;
+  if (m & GL_PIXEL_MODE_BIT) {
+    f.read_buffer = c->read_buffer;
+    const PixelTransfer& x = c->pixel_transfer;
+    AttribFrame::PixelMode& p = f.pixel;
+    p.map_color = x.map_color;
+    p.map_stencil = x.map_stencil;
+    p.index_shift = x.index_shift;
+    p.index_offset = x.index_offset;
+    copy_array(p.scale, x.scale);
+    copy_array(p.bias, x.bias);
+    p.depth_scale = x.depth_scale;
+    p.depth_bias = x.depth_bias;
+    p.zoom_x = x.zoom_x;
+    p.zoom_y = x.zoom_y;
+  }
 }
 
 // Restore the groups of `f` and return the derived state they invalidate.
@@ -150,6 +164,7 @@ uint32_t restore(Context* c, const AttribFrame& f) {
     for (int u = 0; u < kMaxTexUnits; ++u)
       copy_array(c->cur_tex[u], f.current.tex[u]);
     c->cur_edge = f.current.edge;
+    c->raster_pos = f.current.raster;
   }
   if (m & GL_ENABLE_BIT) {
     const auto flags = enable_flags(c);
@@ -258,7 +273,22 @@ uint32_t restore(Context* c, const AttribFrame& f) {
     c->lighting.color_sum = f.color_sum;
     dirty |= kDirtyLighting;
   }
-  if (m & GL_PIXEL_MODE_BIT) c->read_buffer = f.read_buffer;
+  if (m & GL_PIXEL_MODE_BIT) {
+    c->read_buffer = f.read_buffer;
+    PixelTransfer& x = c->pixel_transfer;
+    const AttribFrame::PixelMode& p = f.pixel;
+    x.map_color = p.map_color;
+    x.map_stencil = p.map_stencil;
+    x.index_shift = p.index_shift;
+    x.index_offset = p.index_offset;
+    copy_array(x.scale, p.scale);
+    copy_array(x.bias, p.bias);
+    x.depth_scale = p.depth_scale;
+    x.depth_bias = p.depth_bias;
+    x.zoom_x = p.zoom_x;
+    x.zoom_y = p.zoom_y;
+    dirty |= kDirtyPixel;
+  }
   // GL 2.1 §2.14.3: while COLOR_MATERIAL is enabled the tracked material properties follow
   // the current colour, whichever of the two was restored.
   if ((m & (GL_CURRENT_BIT | GL_LIGHTING_BIT | GL_ENABLE_BIT)) && c->lighting.color_material) {

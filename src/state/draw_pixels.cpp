@@ -200,6 +200,7 @@ void GLAPIENTRY Bitmap(GLsizei width, GLsizei height, GLfloat xorig, GLfloat yor
     // it on that integer.
     constexpr float kEps = 1e-4f;
     const auto corner = [](float v) {
+      if (std::isnan(v)) return -1073741824; // off any window
       const double f = std::floor(static_cast<double>(v));
       return static_cast<int>(std::clamp(f, -1073741824.0, 1073741824.0));
     };

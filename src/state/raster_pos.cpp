@@ -29,8 +29,9 @@ void raster_pos(float x, float y, float z, float w) {
   const glm::vec4 clip = ctx->mvp * obj;
   // §2.13: the "point" is clipped against the view volume (§2.12) and the user clip planes,
   // which are tested in eye coordinates.
-  bool inside = -clip.w <= clip.x && clip.x <= clip.w && -clip.w <= clip.y && clip.y <= clip.w &&
-                -clip.w <= clip.z && clip.z <= clip.w;
+  // w = 0 has no window coordinates: only (0, 0, 0, 0) would pass, and it is refused too.
+  bool inside = clip.w > 0.0f && -clip.w <= clip.x && clip.x <= clip.w && -clip.w <= clip.y &&
+                clip.y <= clip.w && -clip.w <= clip.z && clip.z <= clip.w;
   for (int i = 0; i < kMaxClipPlanes && inside; ++i) {
     if (!ctx->clip_enabled[i]) continue;
     const double* p = ctx->clip_plane[i];
