@@ -15,6 +15,8 @@
 
 #include "framebuffer/framebuffer.h"
 #include "framebuffer/pixel_store.h"
+#include "pixel/raster_pos.h"
+#include "pixel/transfer.h"
 #include "raster/raster.h"
 #include "state/dlist_state.h"
 #include "state/lighting_state.h"
@@ -141,6 +143,7 @@ struct AttribFrame {
   struct Current { // current (Table 6.5)
     float color[4], color2[4], normal[3], tex[kMaxTexUnits][4];
     bool edge;
+    RasterPos raster; // the current raster position and its data (§2.13)
   } current{};
   struct Enables { // enable: every flag of enable_flags() in attrib.cpp, in that order
     bool flag[kMaxClipPlanes + kMaxLights + 16];
@@ -198,6 +201,11 @@ struct AttribFrame {
   RasterModeAttrib raster_modes{}; // line, point, polygon stipple/offset/smooth (raster_modes.cpp)
   float accum_clear[4] = {};     // accum-buffer (Table 6.22)
   GLuint list_base = 0;          // list (Table 6.31)
+  struct PixelMode { // pixel (Tables 6.24-6.27): the transfer modes and zoom, not the maps
+    bool map_color, map_stencil;
+    int index_shift, index_offset;
+    float scale[4], bias[4], depth_scale, depth_bias, zoom_x, zoom_y;
+  } pixel{};
 };
 
 struct Context {
@@ -300,6 +308,11 @@ struct Context {
   // window-system layer that gives the context a back buffer sets both to GL_BACK.
   GLenum draw_buffer = GL_FRONT;
   GLenum read_buffer = GL_FRONT;
+
+  // ---- pixel transfer, pixel maps and zoom (GL 2.1 §3.6.3, §3.6.4), src/state/pixel.cpp ----
+  PixelTransfer pixel_transfer;
+  // The current raster position (GL 2.1 §2.13), src/state/raster_pos.cpp.
+  RasterPos raster_pos;
 
   // ---- hints (Table 6.38) ----
   GLenum hint_perspective = GL_DONT_CARE;

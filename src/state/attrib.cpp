@@ -6,13 +6,12 @@
 // saved and restored by raster_modes.cpp (save_raster_modes / restore_raster_modes); FOG_BIT and
 // the environment, coordinate generation, enables and active unit of TEXTURE_BIT by texenv.cpp.
 //   POINT_BIT also: sprite enables and coordinate origin once point sprites exist.
-//   PIXEL_MODE_BIT also: pixel transfer scales and biases, maps, zoom (Tables 6.23-6.27).
 //   TEXTURE_BIT: bindings and texture object parameters (Tables 6.16-6.18); the environment,
 //     coordinate generation, enables and active unit are saved by texenv.cpp.
 //   EVAL_BIT: evaluator maps, grid and enables (Table 6.28).
 //   MULTISAMPLE_BIT: multisample enables and sample coverage (Table 6.15). COLOR_BUFFER_BIT,
-//   CURRENT_BIT also: index clear value and
-//   write mask, current index and raster position once colour index and raster position exist.
+//   CURRENT_BIT also: index clear value and write mask, current index once colour index
+//   exists.
 #include "core/api_util.h"
 #include "dispatch.h"
 #include "state/raster_modes_hooks.h"
@@ -62,6 +61,7 @@ void save(const Context* c, AttribFrame& f) {
     for (int u = 0; u < kMaxTexUnits; ++u)
       copy_array(f.current.tex[u], c->cur_tex[u]);
     f.current.edge = c->cur_edge;
+    f.current.raster = c->raster_pos;
   }
   if (m & GL_ENABLE_BIT) {
     const auto flags = enable_flags(const_cast<Context*>(c));
@@ -137,7 +137,21 @@ void save(const Context* c, AttribFrame& f) {
                c->hint_texture_compression};
   }
   if (m & GL_FOG_BIT) f.color_sum = c->lighting.color_sum;
-  if (m & GL_PIXEL_MODE_BIT) f.read_buffer = c->read_buffer;
+  if (m & GL_PIXEL_MODE_BIT) {
+    f.read_buffer = c->read_buffer;
+    const PixelTransfer& x = c->pixel_transfer;
+    AttribFrame::PixelMode& p = f.pixel;
+    p.map_color = x.map_color;
+    p.map_stencil = x.map_stencil;
+    p.index_shift = x.index_shift;
+    p.index_offset = x.index_offset;
+    copy_array(p.scale, x.scale);
+    copy_array(p.bias, x.bias);
+    p.depth_scale = x.depth_scale;
+    p.depth_bias = x.depth_bias;
+    p.zoom_x = x.zoom_x;
+    p.zoom_y = x.zoom_y;
+  }
   texpipe_save_attrib(c, m, f.texpipe);
   save_raster_modes(c, f.raster_modes);
   if (m & GL_ACCUM_BUFFER_BIT) copy_array(f.accum_clear, c->accum.clear);
@@ -155,6 +169,7 @@ uint32_t restore(Context* c, const AttribFrame& f) {
     for (int u = 0; u < kMaxTexUnits; ++u)
       copy_array(c->cur_tex[u], f.current.tex[u]);
     c->cur_edge = f.current.edge;
+    c->raster_pos = f.current.raster;
   }
   if (m & GL_ENABLE_BIT) {
     const auto flags = enable_flags(c);
@@ -263,7 +278,22 @@ uint32_t restore(Context* c, const AttribFrame& f) {
     c->lighting.color_sum = f.color_sum;
     dirty |= kDirtyLighting;
   }
-  if (m & GL_PIXEL_MODE_BIT) c->read_buffer = f.read_buffer;
+  if (m & GL_PIXEL_MODE_BIT) {
+    c->read_buffer = f.read_buffer;
+    PixelTransfer& x = c->pixel_transfer;
+    const AttribFrame::PixelMode& p = f.pixel;
+    x.map_color = p.map_color;
+    x.map_stencil = p.map_stencil;
+    x.index_shift = p.index_shift;
+    x.index_offset = p.index_offset;
+    copy_array(x.scale, p.scale);
+    copy_array(x.bias, p.bias);
+    x.depth_scale = p.depth_scale;
+    x.depth_bias = p.depth_bias;
+    x.zoom_x = p.zoom_x;
+    x.zoom_y = p.zoom_y;
+    dirty |= kDirtyPixel;
+  }
   dirty |= texpipe_restore_attrib(c, m, f.texpipe);
   dirty |= restore_raster_modes(c, f.raster_modes, m);
   if (m & GL_ACCUM_BUFFER_BIT) copy_array(c->accum.clear, f.accum_clear);

@@ -14,6 +14,9 @@ bool query_enabled(Context* ctx, GLenum cap, bool* value); // enable.cpp
 // texenv.cpp: up to 16 values; kind 0 integer, 1 boolean, 2 float, 3 normalized.
 bool texpipe_get(Context* ctx, GLenum pname, int* kind, double* values, int* count);
 int texture_get_values(Context* ctx, GLenum pname, double* v, bool* is_float); // texture/
+// Pixel transfer, pixel map sizes, zoom and raster position (pixel.cpp): the number of values
+// written to v (0: not a pixel query) and their kind as the Kind enum's index.
+int pixel_query(const Context* ctx, GLenum pname, double* v, int* kind);
 
 namespace {
 
@@ -88,6 +91,10 @@ bool get_values(Context* ctx, GLenum pname, Values& out) {
       if (normalized) out.kind = Kind::Normalized;
       return true;
     }
+  }
+  if (int kind = 0; (out.n = pixel_query(ctx, pname, out.v, &kind)) > 0) {
+    out.kind = static_cast<Kind>(kind);
+    return true;
   }
   if (const ClientArray* a = array_for(ctx, pname)) {
     switch (pname) {
