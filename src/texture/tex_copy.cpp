@@ -9,6 +9,7 @@
 #include "core/api_util.h"
 #include "dispatch.h"
 #include "framebuffer/read_pixels.h"
+#include "pixel/transfer.h"
 #include "texture/tex_format.h"
 #include "texture/texture_internal.h"
 
@@ -16,14 +17,19 @@ namespace pineda {
 
 namespace {
 
-// Reads the w x h rectangle at window (x, y) as RGBA floats or depth floats. Pixels outside
-// the framebuffer are undefined in GL (§4.3.2); they read as zero here.
+// Reads the w x h rectangle at window (x, y) as RGBA floats or depth floats and applies the
+// pixel transfer operations (§3.8.2: as CopyPixels, up to the final expansion to RGBA).
+// Pixels outside the framebuffer are undefined in GL (§4.3.2); they read as zero here.
 void read_framebuffer(const Context* ctx, int x, int y, int w, int h, bool depth, float* out) {
-  const size_t n = size_t(w) * size_t(h) * (depth ? 1 : 4);
-  std::fill(out, out + n, 0.0f);
+  const size_t n = size_t(w) * size_t(h);
+  std::fill(out, out + n * (depth ? 1 : 4), 0.0f);
   if (ctx->fb.color == nullptr || w == 0 || h == 0) return;
   PixelStore pack; // tightly packed floats
   read_pixels(ctx->fb, x, y, w, h, depth ? GL_DEPTH_COMPONENT : GL_RGBA, GL_FLOAT, pack, out);
+  if (depth)
+    transfer_depth(ctx->pixel_transfer, out, n);
+  else
+    transfer_rgba(ctx->pixel_transfer, out, n);
 }
 
 // The source buffer must exist: a depth texture needs a depth buffer (§3.8.2, §4.3.2).

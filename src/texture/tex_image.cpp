@@ -11,7 +11,7 @@
 
 #include "core/api_util.h"
 #include "dispatch.h"
-#include "framebuffer/read_pixels.h"
+#include "pixel/unpack.h"
 #include "texture/tex_format.h"
 #include "texture/texture_internal.h"
 
@@ -19,180 +19,41 @@ namespace pineda {
 
 namespace {
 
-// ---- client images (until the pixel module exists: UNSIGNED_BYTE and FLOAT only) ----
+// ---- client images (src/pixel/unpack.h) ----
 
-bool client_type_supported(GLenum type) {
-  return type == GL_UNSIGNED_BYTE || type == GL_FLOAT;
-}
-
-// The format/type error of a texture image command (§3.8.1): unknown enums, COLOR_INDEX and
-// STENCIL_INDEX (no index textures exist) are INVALID_ENUM; packed types with the wrong format
-// INVALID_OPERATION.
+// The format/type error of a texture image command (§3.8.1): unknown enums, STENCIL_INDEX and
+// BITMAP are INVALID_ENUM; packed types with the wrong format INVALID_OPERATION.
 GLenum client_format_type_error(GLenum format, GLenum type) {
-  if (format == GL_DEPTH_COMPONENT) {
-    if (!is_valid_type(type) || type == GL_BITMAP) return GL_INVALID_ENUM;
-    if (is_packed_pixel_type(type)) return GL_INVALID_OPERATION;
-  } else if (format == GL_STENCIL_INDEX || format == GL_COLOR_INDEX) {
-    return GL_INVALID_ENUM;
-  } else {
-    const GLenum e = read_format_type_error(format, type);
-    if (e != GL_NO_ERROR) return e;
-  }
-  return client_type_supported(type) ? GL_NO_ERROR : GL_INVALID_ENUM;
+  if (format == GL_STENCIL_INDEX || type == GL_BITMAP) return GL_INVALID_ENUM;
+  return check_pixel_format_type(format, type);
 }
 
-struct Layout {
-  size_t group, row, image;
-  const uint8_t* origin;
-};
-
-Layout client_layout_of(const PixelStore& st, int w, int h, int dims, GLenum format, GLenum type,
-                        const void* pixels) {
-  Layout l;
-  const size_t elem = type == GL_FLOAT ? 4 : 1;
-  l.group = size_t(pixel_format_components(format)) * elem;
-  l.row = packed_row_stride(w, format, type, st);
-  const int image_height = dims == 3 && st.image_height > 0 ? st.image_height : h;
-  l.image = l.row * size_t(image_height);
-  const size_t skip_images = dims == 3 ? size_t(st.skip_images) : 0;
-  l.origin = static_cast<const uint8_t*>(pixels) + skip_images * l.image +
-             size_t(st.skip_rows) * l.row + size_t(st.skip_pixels) * l.group;
-  return l;
+// 1D and 2D images ignore IMAGE_HEIGHT and SKIP_IMAGES (§3.8.1).
+PixelStore store_for(const PixelStore& st, int dims) {
+  return dims == 3 ? st : store_2d(st);
 }
 
-float element(const uint8_t* p, GLenum type) {
-  if (type == GL_FLOAT) {
-    float f;
-    std::memcpy(&f, p, 4);
-    return f;
-  }
-  return p[0] * (1.0f / 255.0f);
-}
-
-// Unpacks to RGBA floats (§3.6.4 conversion to float and final expansion to RGBA).
+// Unpacks to RGBA floats with the pixel transfer operations (§3.8.1: as DrawPixels, up to the
+// final expansion to RGBA).
 void unpack_colour(const Context* ctx, const void* pixels, int w, int h, int d, int dims,
                    GLenum format, GLenum type, float* out) {
-  const Layout l = client_layout_of(ctx->unpack, w, h, dims, format, type, pixels);
-  const size_t esz = type == GL_FLOAT ? 4 : 1;
-  for (int k = 0; k < d; ++k) {
-    for (int j = 0; j < h; ++j) {
-      const uint8_t* p = l.origin + size_t(k) * l.image + size_t(j) * l.row;
-      for (int i = 0; i < w; ++i, p += l.group, out += 4) {
-        auto c = [&](int q) { return element(p + size_t(q) * esz, type); };
-        float r = 0, g = 0, b = 0, a = 1;
-        switch (format) {
-        case GL_RED:
-          r = c(0);
-          break;
-        case GL_GREEN:
-          g = c(0);
-          break;
-        case GL_BLUE:
-          b = c(0);
-          break;
-        case GL_ALPHA:
-          a = c(0);
-          break;
-        case GL_LUMINANCE:
-          r = g = b = c(0);
-          break;
-        case GL_LUMINANCE_ALPHA:
-          r = g = b = c(0), a = c(1);
-          break;
-        case GL_RGB:
-          r = c(0), g = c(1), b = c(2);
-          break;
-        case GL_BGR:
-          r = c(2), g = c(1), b = c(0);
-          break;
-        case GL_RGBA:
-          r = c(0), g = c(1), b = c(2), a = c(3);
-          break;
-        case GL_BGRA:
-          r = c(2), g = c(1), b = c(0), a = c(3);
-          break;
-        default:
-          break;
-        }
-        out[0] = r, out[1] = g, out[2] = b, out[3] = a;
-      }
-    }
-  }
+  unpack_rgba(pixels, w, h, d, format, type, store_for(ctx->unpack, dims), ctx->pixel_transfer,
+              out);
 }
 
 void unpack_z(const Context* ctx, const void* pixels, int w, int h, int d, int dims, GLenum type,
               float* out) {
-  const Layout l = client_layout_of(ctx->unpack, w, h, dims, GL_DEPTH_COMPONENT, type, pixels);
-  for (int k = 0; k < d; ++k)
-    for (int j = 0; j < h; ++j) {
-      const uint8_t* p = l.origin + size_t(k) * l.image + size_t(j) * l.row;
-      for (int i = 0; i < w; ++i, p += l.group)
-        *out++ = element(p, type);
-    }
+  unpack_depth(pixels, w, h, d, type, store_for(ctx->unpack, dims), ctx->pixel_transfer, out);
 }
 
-void put_element(uint8_t* p, GLenum type, float v) {
-  v = v == v ? std::clamp(v, 0.0f, 1.0f) : 0.0f;
-  if (type == GL_FLOAT) {
-    std::memcpy(p, &v, 4);
-  } else {
-    p[0] = static_cast<uint8_t>(v * 255.0f + 0.5f);
-  }
-}
-
-// Packs RGBA floats or depth floats into client memory per the pack state (§4.3.2).
+// Packs RGBA or depth floats into client memory per the pack state (§6.1.4, §4.3.2).
 void pack_groups(const Context* ctx, const float* in, int w, int h, int d, int dims, GLenum format,
                  GLenum type, void* pixels) {
-  const Layout l = client_layout_of(ctx->pack, w, h, dims, format, type, pixels);
-  const size_t esz = type == GL_FLOAT ? 4 : 1;
-  for (int k = 0; k < d; ++k) {
-    for (int j = 0; j < h; ++j) {
-      uint8_t* p = const_cast<uint8_t*>(l.origin) + size_t(k) * l.image + size_t(j) * l.row;
-      for (int i = 0; i < w; ++i, p += l.group) {
-        if (format == GL_DEPTH_COMPONENT) {
-          put_element(p, type, *in++);
-          continue;
-        }
-        const float* c = in;
-        in += 4;
-        auto put = [&](int q, float v) { put_element(p + size_t(q) * esz, type, v); };
-        switch (format) {
-        case GL_RED:
-          put(0, c[0]);
-          break;
-        case GL_GREEN:
-          put(0, c[1]);
-          break;
-        case GL_BLUE:
-          put(0, c[2]);
-          break;
-        case GL_ALPHA:
-          put(0, c[3]);
-          break;
-        case GL_LUMINANCE:
-          put(0, c[0] + c[1] + c[2]);
-          break;
-        case GL_LUMINANCE_ALPHA:
-          put(0, c[0] + c[1] + c[2]), put(1, c[3]);
-          break;
-        case GL_RGB:
-          put(0, c[0]), put(1, c[1]), put(2, c[2]);
-          break;
-        case GL_BGR:
-          put(0, c[2]), put(1, c[1]), put(2, c[0]);
-          break;
-        case GL_RGBA:
-          put(0, c[0]), put(1, c[1]), put(2, c[2]), put(3, c[3]);
-          break;
-        case GL_BGRA:
-          put(0, c[2]), put(1, c[1]), put(2, c[0]), put(3, c[3]);
-          break;
-        default:
-          break;
-        }
-      }
-    }
-  }
+  const PixelStore st = store_for(ctx->pack, dims);
+  if (format == GL_DEPTH_COMPONENT)
+    pack_depth(in, w, h, d, type, st, pixels);
+  else
+    pack_rgba(in, w, h, d, format, type, st, pixels);
 }
 
 // ---- image commands ----
@@ -598,7 +459,9 @@ void GLAPIENTRY GetTexImage(GLenum target, GLint level, GLenum format, GLenum ty
   ImageTarget it;
   if (!image_target(ctx, target, dims, false, it))
     return record_error(ctx, GL_INVALID_ENUM, "glGetTexImage", target);
-  const GLenum fe = client_format_type_error(format, type);
+  // §6.1.4: no index formats for reading back texture images.
+  const GLenum fe =
+      format == GL_COLOR_INDEX ? GL_INVALID_ENUM : client_format_type_error(format, type);
   if (fe == GL_INVALID_ENUM) return record_error(ctx, fe, "glGetTexImage", format);
   if (level < 0 || level >= it.max_levels)
     return record_error(ctx, GL_INVALID_VALUE, "glGetTexImage");
