@@ -189,6 +189,7 @@ struct AttribFrame {
   } hints{};
   bool color_sum = false; // fog: the COLOR_SUM enable (Table 6.11)
   GLenum read_buffer = GL_FRONT; // pixel (Table 6.27)
+  TextureAttrib texture_objects{}; // texture: bindings, object parameters (texture_object.cpp)
 };
 
 struct Context {

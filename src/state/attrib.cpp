@@ -137,6 +137,7 @@ void save(const Context* c, AttribFrame& f) {
   }
   if (m & GL_FOG_BIT) f.color_sum = c->lighting.color_sum;
   if (m & GL_PIXEL_MODE_BIT) f.read_buffer = c->read_buffer;
+  if (m & GL_TEXTURE_BIT) save_texture_attrib(c, f.texture_objects);
 }
 
 // Restore the groups of `f` and return the derived state they invalidate.
@@ -259,6 +260,7 @@ uint32_t restore(Context* c, const AttribFrame& f) {
     dirty |= kDirtyLighting;
   }
   if (m & GL_PIXEL_MODE_BIT) c->read_buffer = f.read_buffer;
+  if (m & GL_TEXTURE_BIT) restore_texture_attrib(c, f.texture_objects); // marks kDirtyTexture
   // GL 2.1 §2.14.3: while COLOR_MATERIAL is enabled the tracked material properties follow
   // the current colour, whichever of the two was restored.
   if ((m & (GL_CURRENT_BIT | GL_LIGHTING_BIT | GL_ENABLE_BIT)) && c->lighting.color_material) {

@@ -33,17 +33,22 @@ PixelStore store_for(const PixelStore& st, int dims) {
   return dims == 3 ? st : store_2d(st);
 }
 
-// Unpacks to RGBA floats with the pixel transfer operations (§3.8.1: as DrawPixels, up to the
-// final expansion to RGBA).
-void unpack_colour(const Context* ctx, const void* pixels, int w, int h, int d, int dims,
-                   GLenum format, GLenum type, float* out) {
-  unpack_rgba(pixels, w, h, d, format, type, store_for(ctx->unpack, dims), ctx->pixel_transfer,
-              out);
-}
-
-void unpack_z(const Context* ctx, const void* pixels, int w, int h, int d, int dims, GLenum type,
-              float* out) {
-  unpack_depth(pixels, w, h, d, type, store_for(ctx->unpack, dims), ctx->pixel_transfer, out);
+// Unpacks a w x h x d client image into the region of `im` at border-relative (x, y, z), one
+// image slice at a time, with the pixel transfer operations (§3.8.1: as DrawPixels, up to the
+// final expansion to RGBA). May throw std::bad_alloc.
+void unpack_into(const Context* ctx, TexImage& im, int dims, int x, int y, int z, int w, int h,
+                 int d, GLenum format, GLenum type, const void* pixels) {
+  PixelStore st = store_for(ctx->unpack, dims);
+  std::vector<float> tmp(size_t(w) * size_t(h) * (im.is_depth ? 1 : 4));
+  const int skip = st.skip_images;
+  for (int k = 0; k < d; ++k) {
+    st.skip_images = skip + k;
+    if (im.is_depth)
+      unpack_depth(pixels, w, h, 1, type, st, ctx->pixel_transfer, tmp.data());
+    else
+      unpack_rgba(pixels, w, h, 1, format, type, st, ctx->pixel_transfer, tmp.data());
+    store_region(im, dims, x, y, z + k, w, h, 1, tmp.data());
+  }
 }
 
 // Packs RGBA or depth floats into client memory per the pack state (§6.1.4, §4.3.2).
@@ -94,10 +99,13 @@ void tex_image(const char* func, int dims, GLenum target, GLint level, GLint int
   const bool fits = width - bb <= limit && (dims < 2 || height - bb <= limit) &&
                     (dims < 3 || depth - bb <= limit);
   const int w = width, h = height, d = depth;
+  // Storage beyond kMaxTextureImageBytes is refused as memory the implementation lacks:
+  // OUT_OF_MEMORY for an image, an unsupported proxy (§3.8.11).
+  const bool affordable = uint64_t(w) * uint64_t(h) * uint64_t(d) * 4u <= kMaxTextureImageBytes;
   if (it.proxy) {
     // §3.8.11: a proxy records the image's state when supported, zeros otherwise.
     TexImage& im = it.tex->images[it.face][level];
-    if (fits)
+    if (fits && affordable)
       set_image_info(im, GLenum(internalformat), info, w, h, d, border);
     else
       clear_image(im);
@@ -107,6 +115,7 @@ void tex_image(const char* func, int dims, GLenum target, GLint level, GLint int
     return;
   }
   if (!fits) return record_error(ctx, GL_INVALID_VALUE, func);
+  if (!affordable) return record_error(ctx, GL_OUT_OF_MEMORY, func);
 
   // The new image is built completely before the object changes: OUT_OF_MEMORY changes
   // nothing (§2.5).
@@ -119,15 +128,9 @@ void tex_image(const char* func, int dims, GLenum target, GLint level, GLint int
     } else {
       im.rgba.assign(count * 4, 0);
     }
-    if (pixels != nullptr && count > 0) {
-      std::vector<float> tmp(count * (info.depth ? 1 : 4));
-      if (info.depth)
-        unpack_z(ctx, pixels, w, h, d, dims, type, tmp.data());
-      else
-        unpack_colour(ctx, pixels, w, h, d, dims, format, type, tmp.data());
-      store_region(im, dims, -border, dims >= 2 ? -border : 0, dims >= 3 ? -border : 0, w, h, d,
-                   tmp.data());
-    }
+    if (pixels != nullptr && count > 0)
+      unpack_into(ctx, im, dims, -border, dims >= 2 ? -border : 0, dims >= 3 ? -border : 0, w, h, d,
+                  format, type, pixels);
   } catch (const std::bad_alloc&) {
     return record_error(ctx, GL_OUT_OF_MEMORY, func);
   } catch (const std::length_error&) {
@@ -155,12 +158,7 @@ void tex_sub_image(const char* func, int dims, GLenum target, GLint level, GLint
   const size_t count = size_t(w) * size_t(h) * size_t(d);
   if (count == 0 || pixels == nullptr) return;
   try {
-    std::vector<float> tmp(count * (im->is_depth ? 1 : 4));
-    if (im->is_depth)
-      unpack_z(ctx, pixels, w, h, d, dims, type, tmp.data());
-    else
-      unpack_colour(ctx, pixels, w, h, d, dims, format, type, tmp.data());
-    store_region(*im, dims, x, y, z, w, h, d, tmp.data());
+    unpack_into(ctx, *im, dims, x, y, z, w, h, d, format, type, pixels);
   } catch (const std::bad_alloc&) {
     return record_error(ctx, GL_OUT_OF_MEMORY, func);
   }
