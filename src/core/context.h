@@ -206,6 +206,7 @@ struct AttribFrame {
     int index_shift, index_offset;
     float scale[4], bias[4], depth_scale, depth_bias, zoom_x, zoom_y;
   } pixel{};
+  TextureAttrib texture_objects{}; // texture: bindings, object parameters (texture_object.cpp)
 };
 
 struct Context {
