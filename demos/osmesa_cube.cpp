@@ -39,8 +39,7 @@ bool write_ppm(const std::string& path, const std::vector<unsigned char>& rgba) 
   std::fprintf(f, "P6\n%d %d\n255\n", kWidth, kHeight);
   // OSMesa rows are bottom-up; PPM rows are top-down.
   for (int y = kHeight - 1; y >= 0; --y)
-    for (int x = 0; x < kWidth; ++x)
-      std::fwrite(&rgba[(y * kWidth + x) * 4], 1, 3, f);
+    for (int x = 0; x < kWidth; ++x) std::fwrite(&rgba[(y * kWidth + x) * 4], 1, 3, f);
   return std::fclose(f) == 0;
 }
 
@@ -51,12 +50,9 @@ int main(int argc, char** argv) {
   std::string screenshot;
   bool check = false;
   for (int i = 1; i < argc; ++i) {
-    if (!std::strcmp(argv[i], "--frames") && i + 1 < argc)
-      frames = std::atoi(argv[++i]);
-    else if (!std::strcmp(argv[i], "--screenshot") && i + 1 < argc)
-      screenshot = argv[++i];
-    else if (!std::strcmp(argv[i], "--check"))
-      check = true;
+    if (!std::strcmp(argv[i], "--frames") && i + 1 < argc) frames = std::atoi(argv[++i]);
+    else if (!std::strcmp(argv[i], "--screenshot") && i + 1 < argc) screenshot = argv[++i];
+    else if (!std::strcmp(argv[i], "--check")) check = true;
     else {
       std::fprintf(stderr, "usage: %s [--frames N] [--screenshot out.ppm] [--check]\n", argv[0]);
       return 2;
