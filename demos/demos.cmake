@@ -2,7 +2,9 @@
 # tests/programs/ (which runs them on Pineda and on Mesa).
 set(PINEDA_DEMO_NAMES gears cube terrain particles picking viewer)
 find_package(glfw3 QUIET)
-set(OpenGL_GL_PREFERENCE GLVND)
+# LEGACY: OpenGL::GL is libGL.so itself (DT_NEEDED libGL.so.1), the library Pineda replaces;
+# GLVND would link libOpenGL.so.0 + libGLX.so.0 instead.
+set(OpenGL_GL_PREFERENCE LEGACY)
 find_package(OpenGL QUIET)
 find_package(PNG QUIET)
 set(PINEDA_GLFW_DEMOS OFF)
