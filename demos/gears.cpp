@@ -118,7 +118,7 @@ public:
     glFrustum(-aspect, aspect, -1.0, 1.0, 5.0, 60.0);
     glMatrixMode(GL_MODELVIEW);
     glLoadIdentity();
-    glTranslatef(0.0f, 0.0f, -40.0f);
+    glTranslatef(0.0f, 0.0f, -44.0f);
 
     glClearColor(0.0f, 0.0f, 0.0f, 1.0f);
     glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
