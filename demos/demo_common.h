@@ -253,7 +253,11 @@ inline int parse_args(const char* name, int argc, char** argv, Options& opt,
           v = value(e.arg.c_str());
           if (v == nullptr) return 2;
         }
-        if (!e.set(v)) return bad(v, e.arg.c_str());
+        if (!e.set(v)) {
+          std::fprintf(stderr, "%s: bad value '%s' for %s %s (%s)\n", name, v, a.c_str(),
+                       e.arg.c_str(), e.help.c_str());
+          return 2;
+        }
       }
       if (!found) {
         std::fprintf(stderr, "%s: unknown option '%s'\n", name, a.c_str());
