@@ -13,7 +13,8 @@ PACKAGES=(
   libpng-dev zlib1g-dev  # conformance images
   libx11-dev libxext-dev # GLX over Xlib, presenting with MIT-SHM (XShm)
   xvfb mesa-utils        # GLX tests: a private X server; unmodified glxinfo
-  libglfw3-dev           # GLX tests: an unmodified GLFW program
+  libglfw3-dev           # GLX tests: an unmodified GLFW program; the demos (demos/)
+  freeglut3-dev          # tests/programs: a freeglut program on Pineda
   piglit                 # scripts/piglit.sh: the external GL 1.x test list (not in the test run)
 )
 
