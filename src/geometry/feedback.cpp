@@ -156,7 +156,7 @@ void select_feedback_draw(Context* ctx, const InputVertex* in, PVertex* verts, s
     // through the texture matrix (GL 2.1 §2.11.4), for feedback to report.
     const glm::mat4& tm = ctx->texture[0].top();
     for (size_t i = 0; i < n; ++i) {
-      const float* t = in[i].tex;
+      const float* t = in[i].tex[0];
       for (int r = 0; r < 4; ++r)
         verts[i].attr[kAttrTex0 + r] =
             tm[0][r] * t[0] + tm[1][r] * t[1] + tm[2][r] * t[2] + tm[3][r] * t[3];

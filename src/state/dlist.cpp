@@ -19,9 +19,9 @@
 namespace pineda {
 
 // Compiled vertices carry, and inherit at execution, every attribute of InputVertex: an
-// attribute added there must be added to ListAttribs, compile_vertex, inherit_current and
+// attribute added there must be added to ListAttribs, set_vertex_attrib, set_attrib_values and
 // apply_attribs too.
-static_assert(sizeof(InputVertex) == 18 * sizeof(float) + sizeof(uint32_t),
+static_assert(sizeof(InputVertex) == (15 + 4 * kMaxTexUnits) * sizeof(float) + sizeof(uint32_t),
               "InputVertex changed: display lists must carry the new attribute (dlist.cpp)");
 
 namespace {
@@ -55,7 +55,10 @@ void apply_attribs(uint32_t mask, const ListAttribs& a) {
   if (mask & kListColor) exec::Color4fv(a.color);
   if (mask & kListColor2) exec::SecondaryColor3fv(a.color2);
   if (mask & kListNormal) exec::Normal3fv(a.normal);
-  if (mask & kListTex) exec::TexCoord4fv(a.tex);
+  if (mask & kListTex) exec::TexCoord4fv(a.tex[0]);
+  for (int u = 1; u < kMaxTexUnits; ++u)
+    if (mask & list_tex_bit(u)) exec::MultiTexCoord4fv(GL_TEXTURE0 + static_cast<GLenum>(u), a.tex[u]);
+  if (mask & kListFog) exec::FogCoordf(a.fog);
   if (mask & kListEdge) exec::EdgeFlag(a.edge ? GL_TRUE : GL_FALSE);
 }
 
@@ -63,8 +66,9 @@ void attribs_of(const InputVertex& v, ListAttribs& a) {
   std::copy(v.color, v.color + 4, a.color);
   std::copy(v.color2, v.color2 + 3, a.color2);
   std::copy(v.normal, v.normal + 3, a.normal);
-  std::copy(v.tex, v.tex + 4, a.tex);
+  for (int u = 0; u < kMaxTexUnits; ++u) std::copy(v.tex[u], v.tex[u] + 4, a.tex[u]);
   a.edge = v.edge != 0;
+  a.fog = v.fog;
 }
 
 ListAttribs current_attribs(const Context* ctx) {
@@ -72,17 +76,41 @@ ListAttribs current_attribs(const Context* ctx) {
   std::copy(ctx->cur_color, ctx->cur_color + 4, a.color);
   std::copy(ctx->cur_color2, ctx->cur_color2 + 3, a.color2);
   std::copy(ctx->cur_normal, ctx->cur_normal + 3, a.normal);
-  std::copy(ctx->cur_tex[0], ctx->cur_tex[0] + 4, a.tex);
+  for (int u = 0; u < kMaxTexUnits; ++u) std::copy(ctx->cur_tex[u], ctx->cur_tex[u] + 4, a.tex[u]);
   a.edge = ctx->cur_edge;
+  a.fog = ctx->texpipe.cur_fog_coord;
   return a;
+}
+
+// Attribute `bit` of `a` into vertex `v`.
+void set_vertex_attrib(InputVertex& v, uint32_t bit, const ListAttribs& a) {
+  switch (bit) {
+  case kListColor: std::copy(a.color, a.color + 4, v.color); break;
+  case kListColor2: std::copy(a.color2, a.color2 + 3, v.color2); break;
+  case kListNormal: std::copy(a.normal, a.normal + 3, v.normal); break;
+  case kListEdge: v.edge = a.edge ? 1u : 0u; break;
+  case kListFog: v.fog = a.fog; break;
+  default:
+    for (int u = 0; u < kMaxTexUnits; ++u)
+      if (bit == list_tex_bit(u)) std::copy(a.tex[u], a.tex[u] + 4, v.tex[u]);
+    break;
+  }
+}
+
+bool same_tex(const ListAttribs& x, const ListAttribs& y, uint32_t mask) {
+  for (int u = 0; u < kMaxTexUnits; ++u)
+    if ((mask & list_tex_bit(u)) && std::memcmp(x.tex[u], y.tex[u], sizeof x.tex[u]) != 0)
+      return false;
+  return true;
 }
 
 bool same_attribs(const ListAttribs& x, const ListAttribs& y, uint32_t mask) {
   return (!(mask & kListColor) || std::memcmp(x.color, y.color, sizeof x.color) == 0) &&
          (!(mask & kListColor2) || std::memcmp(x.color2, y.color2, sizeof x.color2) == 0) &&
          (!(mask & kListNormal) || std::memcmp(x.normal, y.normal, sizeof x.normal) == 0) &&
-         (!(mask & kListTex) || std::memcmp(x.tex, y.tex, sizeof x.tex) == 0) &&
-         (!(mask & kListEdge) || x.edge == y.edge);
+         (!(mask & kListEdge) || x.edge == y.edge) &&
+         (!(mask & kListFog) || std::memcmp(&x.fog, &y.fog, sizeof x.fog) == 0) &&
+         same_tex(x, y, mask);
 }
 
 // The current value of each inherited attribute into the leading vertices that inherit it,
@@ -90,16 +118,8 @@ bool same_attribs(const ListAttribs& x, const ListAttribs& y, uint32_t mask) {
 void inherit_current(const Context* ctx, PrimBlock& b) {
   const ListAttribs cur = current_attribs(ctx);
   if (b.patched && same_attribs(cur, b.patched_values, b.inherit_mask)) return;
-  for (uint32_t i = 0; i < b.inherit_count[0]; ++i)
-    std::copy(cur.color, cur.color + 4, b.verts[i].color);
-  for (uint32_t i = 0; i < b.inherit_count[1]; ++i)
-    std::copy(cur.color2, cur.color2 + 3, b.verts[i].color2);
-  for (uint32_t i = 0; i < b.inherit_count[2]; ++i)
-    std::copy(cur.normal, cur.normal + 3, b.verts[i].normal);
-  for (uint32_t i = 0; i < b.inherit_count[3]; ++i)
-    std::copy(cur.tex, cur.tex + 4, b.verts[i].tex);
-  for (uint32_t i = 0; i < b.inherit_count[4]; ++i)
-    b.verts[i].edge = cur.edge ? 1u : 0u;
+  for (int k = 0; k < kListAttribCount; ++k)
+    for (uint32_t i = 0; i < b.inherit_count[k]; ++i) set_vertex_attrib(b.verts[i], 1u << k, cur);
   b.patched_values = cur;
   b.patched = true;
 }
@@ -212,11 +232,15 @@ void set_attrib_values(ListAttribs& a, uint32_t bit, const float* v) {
   case kListNormal:
     std::copy(v, v + 3, a.normal);
     break;
-  case kListTex:
-    std::copy(v, v + 4, a.tex);
+  case kListEdge:
+    a.edge = v[0] != 0.0f;
+    break;
+  case kListFog:
+    a.fog = v[0];
     break;
   default:
-    a.edge = v[0] != 0.0f;
+    for (int u = 0; u < kMaxTexUnits; ++u)
+      if (bit == list_tex_bit(u)) std::copy(v, v + 4, a.tex[u]);
     break;
   }
 }
@@ -306,12 +330,7 @@ void compile_vertex(Context* ctx, float x, float y, float z, float w) {
   }
   InputVertex& v = b->verts.emplace_back();
   v.pos[0] = x, v.pos[1] = y, v.pos[2] = z, v.pos[3] = w;
-  const ListAttribs& a = d.attribs;
-  std::copy(a.color, a.color + 4, v.color);
-  std::copy(a.color2, a.color2 + 3, v.color2);
-  std::copy(a.normal, a.normal + 3, v.normal);
-  std::copy(a.tex, a.tex + 4, v.tex);
-  v.edge = a.edge ? 1u : 0u;
+  for (int k = 0; k < kListAttribCount; ++k) set_vertex_attrib(v, 1u << k, d.attribs);
   const auto n = static_cast<uint32_t>(b->verts.size());
   for (int k = 0; k < kListAttribCount; ++k) {
     if (!(d.known & (1u << k))) {
@@ -344,9 +363,10 @@ void compile_array_block(Context* ctx, GLenum mode, std::vector<InputVertex>&& v
   b->indices = std::move(indices);
   // GL 2.1 §2.8: attributes without an enabled array take the current values; those the list
   // has set are known now, the others are the current values when the list executes.
-  const bool enabled[kListAttribCount] = {arrays.color.enabled, arrays.secondary.enabled,
-                                          arrays.normal.enabled, arrays.texcoord[0].enabled,
-                                          arrays.edgeflag.enabled};
+  const bool enabled[kListAttribCount] = {
+      arrays.color.enabled,       arrays.secondary.enabled,   arrays.normal.enabled,
+      arrays.texcoord[0].enabled, arrays.edgeflag.enabled,    arrays.texcoord[1].enabled,
+      arrays.texcoord[2].enabled, arrays.texcoord[3].enabled, arrays.fog.enabled};
   const auto n = static_cast<uint32_t>(b->verts.size());
   for (int k = 0; k < kListAttribCount; ++k) {
     if (enabled[k]) continue;
@@ -355,25 +375,7 @@ void compile_array_block(Context* ctx, GLenum mode, std::vector<InputVertex>&& v
       b->inherit_mask |= 1u << k;
       continue;
     }
-    for (InputVertex& v : b->verts) {
-      switch (1u << k) {
-      case kListColor:
-        std::copy(d.attribs.color, d.attribs.color + 4, v.color);
-        break;
-      case kListColor2:
-        std::copy(d.attribs.color2, d.attribs.color2 + 3, v.color2);
-        break;
-      case kListNormal:
-        std::copy(d.attribs.normal, d.attribs.normal + 3, v.normal);
-        break;
-      case kListTex:
-        std::copy(d.attribs.tex, d.attribs.tex + 4, v.tex);
-        break;
-      default:
-        v.edge = d.attribs.edge ? 1u : 0u;
-        break;
-      }
-    }
+    for (InputVertex& v : b->verts) set_vertex_attrib(v, 1u << k, d.attribs);
   }
   PrimBlock* raw = b.get();
   append_record(ctx, &replay_block, &raw, sizeof raw);

@@ -49,8 +49,15 @@ void attrib(uint32_t bit, float a, float b, float c, float d) {
   case kListTex:
     exec::TexCoord4f(a, b, c, d);
     break;
-  default:
+  case kListEdge:
     exec::EdgeFlag(a != 0.0f ? GL_TRUE : GL_FALSE);
+    break;
+  case kListFog:
+    exec::FogCoordf(a);
+    break;
+  default: // kListTex1 .. kListTex3
+    for (int u = 1; u < kMaxTexUnits; ++u)
+      if (bit == list_tex_bit(u)) exec::MultiTexCoord4f(GL_TEXTURE0 + static_cast<GLenum>(u), a, b, c, d);
     break;
   }
 }
@@ -117,7 +124,8 @@ bool arrays_mapped(Context* ctx, bool with_elements) {
   };
   const VertexArrays& a = ctx->arrays;
   for (const ClientArray* array :
-       {&a.vertex, &a.color, &a.normal, &a.texcoord[0], &a.edgeflag, &a.secondary})
+       {&a.vertex, &a.color, &a.normal, &a.texcoord[0], &a.texcoord[1], &a.texcoord[2],
+        &a.texcoord[3], &a.edgeflag, &a.secondary, &a.fog})
     if (array->enabled && mapped(array->buffer)) return true;
   return with_elements && mapped(ctx->element_array_buffer);
 }
@@ -436,6 +444,54 @@ PINEDA_SAVE_TEXCOORD(GLfloat, f)
 PINEDA_SAVE_TEXCOORD(GLdouble, d)
 #undef PINEDA_SAVE_TEXCOORD
 
+// GL 1.3 §2.7: MultiTexCoord sets unit `target`'s current coordinates; a target that names no
+// unit is INVALID_ENUM when the list executes.
+inline void multi_tex(GLenum target, float s, float t, float r, float q) {
+  const GLenum unit = target - GL_TEXTURE0;
+  if (unit < static_cast<GLenum>(kMaxTexUnits)) return attrib(list_tex_bit(static_cast<int>(unit)), s, t, r, q);
+  if (Context* ctx = compiling()) record_error_at_execution(ctx, GL_INVALID_ENUM, "glMultiTexCoord");
+  if (executes(compiling())) exec::MultiTexCoord4f(target, s, t, r, q);
+}
+
+#define PINEDA_SAVE_MULTITEXCOORD(T, S)                                                            \
+  void GLAPIENTRY MultiTexCoord1##S(GLenum u, T s) { multi_tex(u, float(s), 0.0f, 0.0f, 1.0f); }   \
+  void GLAPIENTRY MultiTexCoord2##S(GLenum u, T s, T t) {                                          \
+    multi_tex(u, float(s), float(t), 0.0f, 1.0f);                                                  \
+  }                                                                                                \
+  void GLAPIENTRY MultiTexCoord3##S(GLenum u, T s, T t, T r) {                                     \
+    multi_tex(u, float(s), float(t), float(r), 1.0f);                                              \
+  }                                                                                                \
+  void GLAPIENTRY MultiTexCoord4##S(GLenum u, T s, T t, T r, T q) {                                \
+    multi_tex(u, float(s), float(t), float(r), float(q));                                          \
+  }                                                                                                \
+  void GLAPIENTRY MultiTexCoord1##S##v(GLenum u, const T* v) {                                     \
+    if (v) multi_tex(u, float(v[0]), 0.0f, 0.0f, 1.0f);                                            \
+  }                                                                                                \
+  void GLAPIENTRY MultiTexCoord2##S##v(GLenum u, const T* v) {                                     \
+    if (v) multi_tex(u, float(v[0]), float(v[1]), 0.0f, 1.0f);                                     \
+  }                                                                                                \
+  void GLAPIENTRY MultiTexCoord3##S##v(GLenum u, const T* v) {                                     \
+    if (v) multi_tex(u, float(v[0]), float(v[1]), float(v[2]), 1.0f);                              \
+  }                                                                                                \
+  void GLAPIENTRY MultiTexCoord4##S##v(GLenum u, const T* v) {                                     \
+    if (v) multi_tex(u, float(v[0]), float(v[1]), float(v[2]), float(v[3]));                       \
+  }
+PINEDA_SAVE_MULTITEXCOORD(GLshort, s)
+PINEDA_SAVE_MULTITEXCOORD(GLint, i)
+PINEDA_SAVE_MULTITEXCOORD(GLfloat, f)
+PINEDA_SAVE_MULTITEXCOORD(GLdouble, d)
+#undef PINEDA_SAVE_MULTITEXCOORD
+
+// GL 1.4 §2.7: the fog coordinate is a current attribute like the others.
+void GLAPIENTRY FogCoordf(GLfloat coord) { attrib(kListFog, coord, 0.0f, 0.0f, 0.0f); }
+void GLAPIENTRY FogCoordd(GLdouble coord) { attrib(kListFog, float(coord), 0.0f, 0.0f, 0.0f); }
+void GLAPIENTRY FogCoordfv(const GLfloat* coord) {
+  if (coord) FogCoordf(coord[0]);
+}
+void GLAPIENTRY FogCoorddv(const GLdouble* coord) {
+  if (coord) FogCoordd(coord[0]);
+}
+
 #define PINEDA_SAVE_RECT(T, S)                                                                     \
   void GLAPIENTRY Rect##S(T x1, T y1, T x2, T y2) {                                                \
     rect(x1, y1, x2, y2);                                                                          \
@@ -470,7 +526,9 @@ void GLAPIENTRY ArrayElement(GLint i) {
       if (a.color.enabled) compile_attrib(ctx, kListColor, v.color);
       if (a.secondary.enabled) compile_attrib(ctx, kListColor2, v.color2);
       if (a.normal.enabled) compile_attrib(ctx, kListNormal, v.normal);
-      if (a.texcoord[0].enabled) compile_attrib(ctx, kListTex, v.tex);
+      for (int u = 0; u < kMaxTexUnits; ++u)
+        if (a.texcoord[u].enabled) compile_attrib(ctx, list_tex_bit(u), v.tex[u]);
+      if (a.fog.enabled) compile_attrib(ctx, kListFog, &v.fog);
       if (a.edgeflag.enabled) {
         const float edge = v.edge != 0 ? 1.0f : 0.0f;
         compile_attrib(ctx, kListEdge, &edge);

@@ -37,17 +37,27 @@ enum ListAttribBit : uint32_t {
   kListColor = 1u << 0,
   kListColor2 = 1u << 1,
   kListNormal = 1u << 2,
-  kListTex = 1u << 3,
+  kListTex = 1u << 3, // texture unit 0 (TexCoord, MultiTexCoord(TEXTURE0))
   kListEdge = 1u << 4,
+  kListTex1 = 1u << 5, // units 1..3: kListTex1 << (unit - 1)
+  kListTex2 = 1u << 6,
+  kListTex3 = 1u << 7,
+  kListFog = 1u << 8, // the fog coordinate (GL 1.4)
 };
-constexpr int kListAttribCount = 5;
+constexpr int kListAttribCount = 9;
+
+// The list bit of texture unit `unit` (< kMaxTexUnits).
+constexpr uint32_t list_tex_bit(int unit) {
+  return unit == 0 ? kListTex : kListTex1 << (unit - 1);
+}
 
 struct ListAttribs {
   float color[4];
   float color2[3];
   float normal[3];
-  float tex[4];
+  float tex[4][4]; // per texture unit (kMaxTexUnits)
   bool edge;
+  float fog;
 };
 
 struct DisplayListState {

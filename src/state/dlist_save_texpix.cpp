@@ -1,0 +1,365 @@
+// Display-list savers (GL 2.1 §5.4) for the texture, fog, point-parameter and pixel commands
+// whose arguments point at data of computed size (gl.xml len="COMPSIZE(...)"): the values or
+// the client image are copied when the command is compiled, so the list keeps working after
+// the application reuses its memory.
+//
+// Images (TexImage*, TexSubImage*, DrawPixels, Bitmap, PolygonStipple) are unpacked with the
+// pixel-store state of compile time (§5.4: "the client state ... is taken at the time the list
+// is compiled"). The list keeps the client bytes the unpack state spans together with that
+// state, and at execution unpacks them under it: the same result, without a second pixel
+// format. Pixel transfer operations apply at execution, as for any other compiled command.
+// Proxy texture images are not compiled but executed at once (§5.4).
+#include <algorithm>
+#include <cstring>
+#include <memory>
+#include <new>
+#include <vector>
+
+#include "core/api_util.h"
+#include "dispatch.h"
+#include "pixel/unpack.h"
+#include "state/dlist_internal.h"
+
+namespace pineda {
+
+namespace {
+
+// The context whose list is being compiled, or nullptr.
+Context* compiling_list() {
+  Context* ctx = current_context();
+  return ctx != nullptr && ctx->dlist.list != nullptr ? ctx : nullptr;
+}
+
+// Records `head` followed by `size` bytes of `data` (a header and its array or image);
+// returns whether the command must also execute now (dlist_record).
+bool record_with_data(void (*replay)(const void*), const void* head, size_t head_size,
+                      const void* data, size_t size) {
+  const auto buf = std::make_unique<char[]>(head_size + size);
+  std::memcpy(buf.get(), head, head_size);
+  if (size != 0) std::memcpy(buf.get() + head_size, data, size);
+  return dlist_record(replay, buf.get(), head_size + size);
+}
+
+// ---- parameter vectors --------------------------------------------------------------------
+
+template <typename T> struct Vec4Args {
+  GLenum a, b; // target or coordinate, and pname (unused leading fields stay 0)
+  T v[4];
+};
+
+// Number of values a parameter vector holds (GL 2.1 §3.8.13, §2.11.4, §3.10, §3.8.4, §3.3).
+int vec_count(GLenum pname) {
+  switch (pname) {
+  case GL_TEXTURE_ENV_COLOR:
+  case GL_OBJECT_PLANE:
+  case GL_EYE_PLANE:
+  case GL_FOG_COLOR:
+  case GL_TEXTURE_BORDER_COLOR: return 4;
+  case GL_POINT_DISTANCE_ATTENUATION: return 3;
+  default: return 1;
+  }
+}
+
+template <typename T, void(GLAPIENTRY* Fn)(GLenum, GLenum, const T*)> void replay2(const void* p) {
+  Vec4Args<T> a;
+  std::memcpy(&a, p, sizeof a);
+  Fn(a.a, a.b, a.v);
+}
+
+template <typename T, void(GLAPIENTRY* Fn)(GLenum, const T*)> void replay1(const void* p) {
+  Vec4Args<T> a;
+  std::memcpy(&a, p, sizeof a);
+  Fn(a.b, a.v);
+}
+
+// Compiles a (a, pname, params) command; returns whether it must also execute now. A null
+// pointer compiles nothing (the command then does nothing, as pineda::exec treats it).
+template <typename T>
+bool save_vec(void (*replay)(const void*), GLenum a, GLenum pname, const T* params) {
+  if (compiling_list() == nullptr) return true;
+  if (params == nullptr) return false;
+  Vec4Args<T> args{a, pname, {}};
+  std::copy(params, params + vec_count(pname), args.v);
+  return dlist_record(replay, &args, sizeof args);
+}
+
+// ---- arrays of values ---------------------------------------------------------------------
+
+// Larger than any pixel map or texture-name array a valid call can pass; a larger count is
+// an error of the command, generated when the list executes.
+constexpr GLsizei kMaxCopiedValues = 1 << 16;
+
+struct alignas(16) PixelMapHeader {
+  GLenum map;
+  GLsizei mapsize;
+  GLsizei copied;
+};
+
+template <typename T, void(GLAPIENTRY* Fn)(GLenum, GLsizei, const T*)>
+void replay_pixel_map(const void* p) {
+  PixelMapHeader h;
+  std::memcpy(&h, p, sizeof h);
+  std::vector<T> values(static_cast<size_t>(h.copied));
+  std::memcpy(values.data(), static_cast<const char*>(p) + sizeof h, values.size() * sizeof(T));
+  Fn(h.map, h.mapsize, h.copied > 0 ? values.data() : nullptr);
+}
+
+template <typename T, void(GLAPIENTRY* Fn)(GLenum, GLsizei, const T*)>
+bool save_pixel_map(GLenum map, GLsizei mapsize, const T* values) {
+  if (compiling_list() == nullptr) return true;
+  const GLsizei copied = values == nullptr ? 0 : std::clamp<GLsizei>(mapsize, 0, kMaxCopiedValues);
+  const PixelMapHeader h{map, mapsize, copied};
+  return record_with_data(&replay_pixel_map<T, Fn>, &h, sizeof h, values,
+                          static_cast<size_t>(copied) * sizeof(T));
+}
+
+struct alignas(16) PrioritizeHeader {
+  GLsizei n;
+  GLsizei copied;
+};
+
+void replay_prioritize(const void* p) {
+  PrioritizeHeader h;
+  std::memcpy(&h, p, sizeof h);
+  const size_t n = static_cast<size_t>(h.copied);
+  std::vector<GLuint> names(n);
+  std::vector<GLfloat> priorities(n);
+  const char* data = static_cast<const char*>(p) + sizeof h;
+  std::memcpy(names.data(), data, n * sizeof(GLuint));
+  std::memcpy(priorities.data(), data + n * sizeof(GLuint), n * sizeof(GLfloat));
+  exec::PrioritizeTextures(h.n, names.data(), priorities.data());
+}
+
+// ---- images -------------------------------------------------------------------------------
+
+// Every image command's scalar arguments, the unpack state of compile time and the size of
+// the client bytes that follow the header in the record (0: the command had no data).
+struct alignas(16) ImageHeader {
+  GLenum target = 0, format = 0, type = 0;
+  GLint level = 0, internal_format = 0, border = 0;
+  GLint x = 0, y = 0, z = 0;
+  GLsizei w = 0, h = 0, d = 0;
+  GLfloat f[4] = {}; // Bitmap: xorig, yorig, xmove, ymove
+  PixelStore unpack;
+  size_t bytes = 0;
+};
+
+using ImageCall = void (*)(const ImageHeader& h, const void* pixels);
+
+// Executes `call` on the data that follows the header, unpacked with the compile-time unpack
+// state, which is put back afterwards.
+template <ImageCall Call> void replay_image(const void* p) {
+  ImageHeader h;
+  std::memcpy(&h, p, sizeof h);
+  Context* ctx = current_context();
+  if (ctx == nullptr) return;
+  const PixelStore saved = ctx->unpack;
+  ctx->unpack = h.unpack;
+  Call(h, h.bytes != 0 ? static_cast<const char*>(p) + sizeof h : nullptr);
+  ctx->unpack = saved;
+}
+
+// Compiles an image command whose client image spans client_image_bytes(w, h, d, format,
+// type) under the current unpack state; returns whether it must also execute now.
+template <ImageCall Call> bool save_image(ImageHeader h, const void* pixels) {
+  Context* ctx = compiling_list();
+  if (ctx == nullptr) return true;
+  h.unpack = ctx->unpack;
+  h.bytes = pixels == nullptr ? 0
+                              : client_image_bytes(h.w, h.h, h.d, h.format, h.type, ctx->unpack);
+  try {
+    return record_with_data(&replay_image<Call>, &h, sizeof h, pixels, h.bytes);
+  } catch (const std::bad_alloc&) {
+    record_error_at_execution(ctx, GL_OUT_OF_MEMORY, "glNewList");
+    return list_executes(ctx);
+  }
+}
+
+bool is_proxy(GLenum target) {
+  return target == GL_PROXY_TEXTURE_1D || target == GL_PROXY_TEXTURE_2D ||
+         target == GL_PROXY_TEXTURE_3D || target == GL_PROXY_TEXTURE_CUBE_MAP;
+}
+
+void call_tex_image_1d(const ImageHeader& h, const void* px) {
+  exec::TexImage1D(h.target, h.level, h.internal_format, h.w, h.border, h.format, h.type, px);
+}
+void call_tex_image_2d(const ImageHeader& h, const void* px) {
+  exec::TexImage2D(h.target, h.level, h.internal_format, h.w, h.h, h.border, h.format, h.type,
+                   px);
+}
+void call_tex_image_3d(const ImageHeader& h, const void* px) {
+  exec::TexImage3D(h.target, h.level, h.internal_format, h.w, h.h, h.d, h.border, h.format,
+                   h.type, px);
+}
+void call_tex_sub_image_1d(const ImageHeader& h, const void* px) {
+  exec::TexSubImage1D(h.target, h.level, h.x, h.w, h.format, h.type, px);
+}
+void call_tex_sub_image_2d(const ImageHeader& h, const void* px) {
+  exec::TexSubImage2D(h.target, h.level, h.x, h.y, h.w, h.h, h.format, h.type, px);
+}
+void call_tex_sub_image_3d(const ImageHeader& h, const void* px) {
+  exec::TexSubImage3D(h.target, h.level, h.x, h.y, h.z, h.w, h.h, h.d, h.format, h.type, px);
+}
+void call_draw_pixels(const ImageHeader& h, const void* px) {
+  exec::DrawPixels(h.w, h.h, h.format, h.type, px);
+}
+void call_bitmap(const ImageHeader& h, const void* px) {
+  exec::Bitmap(h.w, h.h, h.f[0], h.f[1], h.f[2], h.f[3], static_cast<const GLubyte*>(px));
+}
+void call_polygon_stipple(const ImageHeader&, const void* px) {
+  exec::PolygonStipple(static_cast<const GLubyte*>(px));
+}
+
+} // namespace
+
+namespace saver {
+
+void GLAPIENTRY TexEnvfv(GLenum target, GLenum pname, const GLfloat* params) {
+  if (save_vec(&replay2<GLfloat, &exec::TexEnvfv>, target, pname, params))
+    exec::TexEnvfv(target, pname, params);
+}
+void GLAPIENTRY TexEnviv(GLenum target, GLenum pname, const GLint* params) {
+  if (save_vec(&replay2<GLint, &exec::TexEnviv>, target, pname, params))
+    exec::TexEnviv(target, pname, params);
+}
+void GLAPIENTRY TexGeniv(GLenum coord, GLenum pname, const GLint* params) {
+  if (save_vec(&replay2<GLint, &exec::TexGeniv>, coord, pname, params))
+    exec::TexGeniv(coord, pname, params);
+}
+void GLAPIENTRY TexGenfv(GLenum coord, GLenum pname, const GLfloat* params) {
+  if (save_vec(&replay2<GLfloat, &exec::TexGenfv>, coord, pname, params))
+    exec::TexGenfv(coord, pname, params);
+}
+void GLAPIENTRY TexGendv(GLenum coord, GLenum pname, const GLdouble* params) {
+  if (save_vec(&replay2<GLdouble, &exec::TexGendv>, coord, pname, params))
+    exec::TexGendv(coord, pname, params);
+}
+void GLAPIENTRY TexParameterfv(GLenum target, GLenum pname, const GLfloat* params) {
+  if (save_vec(&replay2<GLfloat, &exec::TexParameterfv>, target, pname, params))
+    exec::TexParameterfv(target, pname, params);
+}
+void GLAPIENTRY TexParameteriv(GLenum target, GLenum pname, const GLint* params) {
+  if (save_vec(&replay2<GLint, &exec::TexParameteriv>, target, pname, params))
+    exec::TexParameteriv(target, pname, params);
+}
+void GLAPIENTRY Fogfv(GLenum pname, const GLfloat* params) {
+  if (save_vec(&replay1<GLfloat, &exec::Fogfv>, 0, pname, params)) exec::Fogfv(pname, params);
+}
+void GLAPIENTRY Fogiv(GLenum pname, const GLint* params) {
+  if (save_vec(&replay1<GLint, &exec::Fogiv>, 0, pname, params)) exec::Fogiv(pname, params);
+}
+void GLAPIENTRY PointParameterfv(GLenum pname, const GLfloat* params) {
+  if (save_vec(&replay1<GLfloat, &exec::PointParameterfv>, 0, pname, params))
+    exec::PointParameterfv(pname, params);
+}
+void GLAPIENTRY PointParameteriv(GLenum pname, const GLint* params) {
+  if (save_vec(&replay1<GLint, &exec::PointParameteriv>, 0, pname, params))
+    exec::PointParameteriv(pname, params);
+}
+
+void GLAPIENTRY PixelMapfv(GLenum map, GLsizei mapsize, const GLfloat* values) {
+  if (save_pixel_map<GLfloat, &exec::PixelMapfv>(map, mapsize, values))
+    exec::PixelMapfv(map, mapsize, values);
+}
+void GLAPIENTRY PixelMapuiv(GLenum map, GLsizei mapsize, const GLuint* values) {
+  if (save_pixel_map<GLuint, &exec::PixelMapuiv>(map, mapsize, values))
+    exec::PixelMapuiv(map, mapsize, values);
+}
+void GLAPIENTRY PixelMapusv(GLenum map, GLsizei mapsize, const GLushort* values) {
+  if (save_pixel_map<GLushort, &exec::PixelMapusv>(map, mapsize, values))
+    exec::PixelMapusv(map, mapsize, values);
+}
+
+void GLAPIENTRY PrioritizeTextures(GLsizei n, const GLuint* textures, const GLfloat* priorities) {
+  if (compiling_list() == nullptr) return exec::PrioritizeTextures(n, textures, priorities);
+  const GLsizei copied = (textures == nullptr || priorities == nullptr)
+                             ? 0 : std::clamp<GLsizei>(n, 0, kMaxCopiedValues);
+  const size_t k = static_cast<size_t>(copied);
+  const PrioritizeHeader h{n, copied};
+  std::vector<char> data(k * (sizeof(GLuint) + sizeof(GLfloat)) + 1);
+  if (k > 0) {
+    std::memcpy(&data[0], textures, k * sizeof(GLuint));
+    std::memcpy(&data[k * sizeof(GLuint)], priorities, k * sizeof(GLfloat));
+  }
+  if (record_with_data(&replay_prioritize, &h, sizeof h, &data[0], data.size() - 1))
+    exec::PrioritizeTextures(n, textures, priorities);
+}
+
+void GLAPIENTRY TexImage1D(GLenum target, GLint level, GLint internalformat, GLsizei width,
+                           GLint border, GLenum format, GLenum type, const void* pixels) {
+  ImageHeader h;
+  h.target = target, h.level = level, h.internal_format = internalformat;
+  h.w = width, h.h = 1, h.d = 1, h.border = border, h.format = format, h.type = type;
+  if (is_proxy(target) || save_image<&call_tex_image_1d>(h, pixels))
+    exec::TexImage1D(target, level, internalformat, width, border, format, type, pixels);
+}
+void GLAPIENTRY TexImage2D(GLenum target, GLint level, GLint internalformat, GLsizei width,
+                           GLsizei height, GLint border, GLenum format, GLenum type,
+                           const void* pixels) {
+  ImageHeader h;
+  h.target = target, h.level = level, h.internal_format = internalformat;
+  h.w = width, h.h = height, h.d = 1, h.border = border, h.format = format, h.type = type;
+  if (is_proxy(target) || save_image<&call_tex_image_2d>(h, pixels))
+    exec::TexImage2D(target, level, internalformat, width, height, border, format, type,
+                     pixels);
+}
+void GLAPIENTRY TexImage3D(GLenum target, GLint level, GLint internalformat, GLsizei width,
+                           GLsizei height, GLsizei depth, GLint border, GLenum format,
+                           GLenum type, const void* pixels) {
+  ImageHeader h;
+  h.target = target, h.level = level, h.internal_format = internalformat;
+  h.w = width, h.h = height, h.d = depth, h.border = border, h.format = format, h.type = type;
+  if (is_proxy(target) || save_image<&call_tex_image_3d>(h, pixels))
+    exec::TexImage3D(target, level, internalformat, width, height, depth, border, format, type,
+                     pixels);
+}
+void GLAPIENTRY TexSubImage1D(GLenum target, GLint level, GLint xoffset, GLsizei width,
+                              GLenum format, GLenum type, const void* pixels) {
+  ImageHeader h;
+  h.target = target, h.level = level, h.x = xoffset;
+  h.w = width, h.h = 1, h.d = 1, h.format = format, h.type = type;
+  if (save_image<&call_tex_sub_image_1d>(h, pixels))
+    exec::TexSubImage1D(target, level, xoffset, width, format, type, pixels);
+}
+void GLAPIENTRY TexSubImage2D(GLenum target, GLint level, GLint xoffset, GLint yoffset,
+                              GLsizei width, GLsizei height, GLenum format, GLenum type,
+                              const void* pixels) {
+  ImageHeader h;
+  h.target = target, h.level = level, h.x = xoffset, h.y = yoffset;
+  h.w = width, h.h = height, h.d = 1, h.format = format, h.type = type;
+  if (save_image<&call_tex_sub_image_2d>(h, pixels))
+    exec::TexSubImage2D(target, level, xoffset, yoffset, width, height, format, type, pixels);
+}
+void GLAPIENTRY TexSubImage3D(GLenum target, GLint level, GLint xoffset, GLint yoffset,
+                              GLint zoffset, GLsizei width, GLsizei height, GLsizei depth,
+                              GLenum format, GLenum type, const void* pixels) {
+  ImageHeader h;
+  h.target = target, h.level = level, h.x = xoffset, h.y = yoffset, h.z = zoffset;
+  h.w = width, h.h = height, h.d = depth, h.format = format, h.type = type;
+  if (save_image<&call_tex_sub_image_3d>(h, pixels))
+    exec::TexSubImage3D(target, level, xoffset, yoffset, zoffset, width, height, depth, format,
+                        type, pixels);
+}
+void GLAPIENTRY DrawPixels(GLsizei width, GLsizei height, GLenum format, GLenum type,
+                           const void* pixels) {
+  ImageHeader h;
+  h.w = width, h.h = height, h.d = 1, h.format = format, h.type = type;
+  if (save_image<&call_draw_pixels>(h, pixels)) exec::DrawPixels(width, height, format, type, pixels);
+}
+void GLAPIENTRY Bitmap(GLsizei width, GLsizei height, GLfloat xorig, GLfloat yorig, GLfloat xmove,
+                       GLfloat ymove, const GLubyte* bitmap) {
+  ImageHeader h;
+  h.w = width, h.h = height, h.d = 1, h.format = GL_COLOR_INDEX, h.type = GL_BITMAP;
+  h.f[0] = xorig, h.f[1] = yorig, h.f[2] = xmove, h.f[3] = ymove;
+  if (save_image<&call_bitmap>(h, bitmap))
+    exec::Bitmap(width, height, xorig, yorig, xmove, ymove, bitmap);
+}
+void GLAPIENTRY PolygonStipple(const GLubyte* mask) {
+  ImageHeader h;
+  h.w = 32, h.h = 32, h.d = 1, h.format = GL_COLOR_INDEX, h.type = GL_BITMAP;
+  if (save_image<&call_polygon_stipple>(h, mask)) exec::PolygonStipple(mask);
+}
+
+} // namespace saver
+
+} // namespace pineda
