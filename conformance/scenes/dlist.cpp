@@ -3,8 +3,9 @@
 // COMPILE_AND_EXECUTE mode, lists whose vertices inherit the current colour, vertex arrays
 // dereferenced at compile time, and Material between Begin and End inside a list. Every
 // scene compiles its lists again in each repetition and deletes them at the end.
+#include "scene_util.h" // first: gear_geometry.h needs the GL header it includes
+
 #include "gear_geometry.h"
-#include "scene_util.h"
 
 #include <cmath>
 
