@@ -117,8 +117,12 @@ void feedback_primitives(FeedbackSink& sink, const DrawCall& dc, GLenum mode, co
       piece(GL_TRIANGLE_FAN, {0, i + 1, i + 2});
     break;
   case GL_QUADS:
+    // As the polygon q3 q0 q1 q2: the triangles (q0, q1, q3) and (q1, q2, q3), with the
+    // quad's own edge flags, q3 provoking and LINE mode walking q3q0, q0q1, q1q2, q2q3, which
+    // is how Mesa's feedback reports quads (its rasterizer splits them the other way, which
+    // draws follow: assemble.cpp).
     for (size_t i = 0; i + 3 < count; i += 4)
-      piece(GL_QUADS, {i, i + 1, i + 2, i + 3});
+      piece(GL_POLYGON, {i + 3, i, i + 1, i + 2});
     break;
   case GL_QUAD_STRIP:
     for (size_t i = 0; i + 3 < count; i += 2)

@@ -158,7 +158,12 @@ TEST_F(Glx, ConfigsAndSorting) {
   EXPECT_EQ(by_id, c);
 
   // Unsatisfiable and undefined requests.
-  EXPECT_EQ(choose({GLX_ACCUM_RED_SIZE, 1}), nullptr);
+  // Accumulation buffers: Mesa's 16 signed bits per channel, on request only (rule 10).
+  GLXFBConfig acc = choose({GLX_ACCUM_RED_SIZE, 1});
+  ASSERT_NE(acc, nullptr);
+  EXPECT_EQ(attrib(acc, GLX_ACCUM_RED_SIZE), 16);
+  EXPECT_EQ(attrib(acc, GLX_ACCUM_ALPHA_SIZE), 16);
+  EXPECT_EQ(attrib(choose({}), GLX_ACCUM_RED_SIZE), 0);
   EXPECT_EQ(choose({GLX_STEREO, True}), nullptr);
   EXPECT_EQ(choose({0x7777, 1}), nullptr);
 }
@@ -357,6 +362,36 @@ TEST_F(Glx, Pbuffer) {
   glReadPixels(1, 1, 1, 1, GL_RGBA, GL_UNSIGNED_BYTE, px);
   EXPECT_EQ(px[2], 255);
   EXPECT_EQ(px[3], 255);
+  ASSERT_TRUE(glXMakeContextCurrent(dpy, None, None, nullptr));
+  glXDestroyPbuffer(dpy, pb);
+  glXDestroyContext(dpy, ctx);
+  EXPECT_EQ(g_error_count, 0);
+}
+
+TEST_F(Glx, AccumulationBufferInAPbuffer) {
+  GLXFBConfig c = choose({GLX_DRAWABLE_TYPE, GLX_PBUFFER_BIT, GLX_ACCUM_RED_SIZE, 16});
+  ASSERT_NE(c, nullptr);
+  const int attribs[] = {GLX_PBUFFER_WIDTH, 16, GLX_PBUFFER_HEIGHT, 16, None};
+  GLXPbuffer pb = glXCreatePbuffer(dpy, c, attribs);
+  GLXContext ctx = glXCreateNewContext(dpy, c, GLX_RGBA_TYPE, nullptr, True);
+  ASSERT_TRUE(glXMakeContextCurrent(dpy, pb, pb, ctx));
+  GLint bits = 0;
+  glGetIntegerv(GL_ACCUM_RED_BITS, &bits);
+  EXPECT_EQ(bits, 16);
+  // GL 2.1 §4.2.4: half of red plus half of blue, returned.
+  glClearColor(1, 0, 0, 1);
+  glClear(GL_COLOR_BUFFER_BIT);
+  glAccum(GL_LOAD, 0.5f);
+  glClearColor(0, 0, 1, 1);
+  glClear(GL_COLOR_BUFFER_BIT);
+  glAccum(GL_ACCUM, 0.5f);
+  glAccum(GL_RETURN, 1.0f);
+  EXPECT_EQ(glGetError(), static_cast<GLenum>(GL_NO_ERROR));
+  GLubyte px[4] = {};
+  glReadPixels(3, 3, 1, 1, GL_RGBA, GL_UNSIGNED_BYTE, px);
+  EXPECT_NEAR(px[0], 127, 1);
+  EXPECT_EQ(px[1], 0);
+  EXPECT_NEAR(px[2], 127, 1);
   ASSERT_TRUE(glXMakeContextCurrent(dpy, None, None, nullptr));
   glXDestroyPbuffer(dpy, pb);
   glXDestroyContext(dpy, ctx);

@@ -76,21 +76,26 @@ void build_configs(DisplayState* ds) {
       for (bool db : {true, false})
         for (int alpha : {8, 0})
           for (int depth : {24, 16, 0})
-            for (int stencil : {8, 0}) {
-              auto c = std::make_unique<Config>();
-              c->id = next_id++;
-              c->screen = screen;
-              c->visual = v.visual;
-              c->visual_id = v.visualid;
-              c->visual_depth = v.depth;
-              pixel_format(dpy, v, &c->format);
-              c->rgb_mask = v.red_mask | v.green_mask | v.blue_mask;
-              c->double_buffer = db;
-              c->alpha_bits = alpha;
-              c->depth_bits = depth;
-              c->stencil_bits = stencil;
-              ds->configs.push_back(std::move(c));
-            }
+            for (int stencil : {8, 0})
+              // An accumulation buffer only next to depth 24 and stencil 8, so that the list
+              // grows by one config per buffering and alpha choice rather than doubling.
+              for (int accum : {0, 16}) {
+                if (accum != 0 && (depth != 24 || stencil != 8)) continue;
+                auto c = std::make_unique<Config>();
+                c->id = next_id++;
+                c->screen = screen;
+                c->visual = v.visual;
+                c->visual_id = v.visualid;
+                c->visual_depth = v.depth;
+                pixel_format(dpy, v, &c->format);
+                c->rgb_mask = v.red_mask | v.green_mask | v.blue_mask;
+                c->double_buffer = db;
+                c->alpha_bits = alpha;
+                c->depth_bits = depth;
+                c->stencil_bits = stencil;
+                c->accum_bits = accum;
+                ds->configs.push_back(std::move(c));
+              }
     }
     if (vis != nullptr) XFree(vis);
   }
@@ -176,11 +181,10 @@ bool config_attrib(const Config& c, int attribute, int* value) {
   case GLX_ALPHA_SIZE: v = c.alpha_bits; break;
   case GLX_DEPTH_SIZE: v = c.depth_bits; break;
   case GLX_STENCIL_SIZE: v = c.stencil_bits; break;
-  // Pineda has no accumulation buffer yet.
   case GLX_ACCUM_RED_SIZE:
   case GLX_ACCUM_GREEN_SIZE:
   case GLX_ACCUM_BLUE_SIZE:
-  case GLX_ACCUM_ALPHA_SIZE: v = 0; break;
+  case GLX_ACCUM_ALPHA_SIZE: v = c.accum_bits; break;
   case GLX_SAMPLE_BUFFERS:
   case GLX_SAMPLES: v = 0; break;
   case GLX_FBCONFIG_ID: v = c.id; break;

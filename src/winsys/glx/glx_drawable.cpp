@@ -135,6 +135,7 @@ bool allocate_buffers(Surface& s, int width, int height) {
     }
     s.depth.assign(s.config->depth_bits > 0 ? pixels : 0, 0);
     s.stencil.assign(s.config->stencil_bits > 0 ? pixels : 0, 0);
+    s.accum.assign(s.config->accum_bits > 0 ? 4 * pixels : 0, 0);
   } catch (const std::bad_alloc&) {
     return false;
   }
@@ -175,6 +176,8 @@ void attach(GlxContext* ctx, Surface& s) {
   fb.depth = s.depth.empty() ? nullptr : s.depth.data();
   fb.stencil_bits = s.config->stencil_bits;
   fb.stencil = s.stencil.empty() ? nullptr : s.stencil.data();
+  fb.accum_bits = s.config->accum_bits;
+  fb.accum = s.accum.empty() ? nullptr : s.accum.data();
   // GL 2.1 table 4.4. Pineda keeps one colour buffer per drawable: for a double-buffered
   // window or pbuffer it is the back buffer (the front one is what the last swap showed and
   // cannot be drawn to or read yet); a pixmap's is its front buffer (§3.3.5: swaps are ignored).

@@ -37,6 +37,7 @@ struct Config {
   int alpha_bits = 0;
   int depth_bits = 0;
   int stencil_bits = 0;
+  int accum_bits = 0; // 0 or 16: signed 16 bits per channel, as Mesa gives (GL 2.1 §4.2.4)
 };
 
 struct Surface;
@@ -78,6 +79,7 @@ struct Surface {
   std::vector<uint8_t> memory;
   std::vector<uint32_t> depth;
   std::vector<uint8_t> stencil;
+  std::vector<int16_t> accum; // RGBA per pixel when the config has an accumulation buffer
   GC gc = nullptr;
 
   // Pbuffer creation attributes (GLX 1.4 §3.3.5).

@@ -404,6 +404,32 @@ TEST_F(Feedback, TriangleAndCulling) {
   glDisable(GL_CULL_FACE);
 }
 
+TEST_F(Feedback, QuadsSplitAsMesaReportsThem) {
+  glShadeModel(GL_FLAT);
+  const auto r = feedback(GL_3D_COLOR, [] {
+    glBegin(GL_QUADS);
+    glColor3f(1, 0, 0);
+    glVertex2f(-0.5f, -0.5f);
+    glVertex2f(0.5f, -0.5f);
+    glVertex2f(0.5f, 0.5f);
+    glColor3f(0, 0, 1); // the fourth vertex provokes (GL 2.1 Table 2.12)
+    glVertex2f(-0.5f, 0.5f);
+    glEnd();
+  });
+  const std::vector<float> q0 = {8, 8, 0.5f, 0, 0, 1, 1}, q1 = {24, 8, 0.5f, 0, 0, 1, 1},
+                           q2 = {24, 24, 0.5f, 0, 0, 1, 1}, q3 = {8, 24, 0.5f, 0, 0, 1, 1};
+  std::vector<float> want;
+  for (const auto* tri : {&q0, &q1, &q3, &q1, &q2, &q3}) {
+    if (want.size() % 23 == 0) {
+      want.push_back(kPoly);
+      want.push_back(3);
+    }
+    want.insert(want.end(), tri->begin(), tri->end());
+  }
+  expect_values(r, want);
+  glShadeModel(GL_SMOOTH);
+}
+
 TEST_F(Feedback, ClippedTriangleStaysInsideTheViewport) {
   const auto r = feedback(GL_3D, [] {
     glBegin(GL_TRIANGLES);
