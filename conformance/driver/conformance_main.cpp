@@ -9,6 +9,7 @@
 #include "report.h"
 #include "rgba_image.h"
 
+#include <algorithm>
 #include <cmath>
 #include <ctime>
 #include <cstdio>
@@ -33,6 +34,8 @@ struct Options {
   std::string runner;
   bool softpipe = true, allow_any_renderer = false, list = false;
   int tolerance = 2, reps = 5, threads = 0;
+  int rounds = 1;  // runs of each implementation, alternating; times are their median
+  std::string csv; // also write one line per scene to this CSV file
   double timeout = 50.0;
   std::string command_line;
 };
@@ -49,6 +52,9 @@ void usage(std::FILE* to) {
       "  --no-softpipe         skip the softpipe runs\n"
       "  --tolerance N         per-channel difference still counted as equal (default 2)\n"
       "  --reps N              timed repetitions per scene (default 5)\n"
+      "  --rounds N            run each implementation N times, alternating, and report the\n"
+      "                        median of the runs' medians (benchmarks; default 1)\n"
+      "  --csv FILE            also write the table as CSV (times, ratios, error)\n"
       "  --threads N           LP_NUM_THREADS for llvmpipe (default: Mesa's choice)\n"
       "  --timeout SEC         limit per runner process (default 50)\n"
       "  --runner PATH         pineda_scene_runner to use\n"
@@ -249,6 +255,39 @@ SceneRecord run_scene(const Options& o, const ManifestEntry& scene) {
     run_impl(o, scene, Impl{"softpipe", "softpipe", mesa_env(o, "softpipe")}, dir, r.softpipe,
              softpipe_image);
 
+  // Further rounds, alternating the implementations so that machine noise hits them alike;
+  // each one's time becomes the median of its runs' medians (the images of round one count).
+  if (o.rounds > 1) {
+    struct Timed {
+      ImplResult* result;
+      Impl impl;
+      std::vector<double> ms;
+    };
+    std::vector<Timed> timed;
+    fs::create_directories(dir + "/round", ec);
+    if (r.pineda.ok) timed.push_back({&r.pineda, pineda, {r.pineda.median_ms}});
+    if (r.llvmpipe.ok)
+      timed.push_back({&r.llvmpipe, Impl{"llvmpipe", "llvmpipe", mesa_env(o, "llvmpipe")},
+                       {r.llvmpipe.median_ms}});
+    if (r.softpipe.ok)
+      timed.push_back({&r.softpipe, Impl{"softpipe", "softpipe", mesa_env(o, "softpipe")},
+                       {r.softpipe.median_ms}});
+    for (int round = 1; round < o.rounds; ++round) {
+      for (Timed& t : timed) {
+        ImplResult again;
+        RgbaImage ignored_image;
+        run_impl(o, scene, t.impl, dir + "/round", again, ignored_image);
+        if (again.ok) t.ms.push_back(again.median_ms);
+      }
+    }
+    for (Timed& t : timed) {
+      std::sort(t.ms.begin(), t.ms.end());
+      const size_t n = t.ms.size();
+      t.result->median_ms = n % 2 ? t.ms[n / 2] : 0.5 * (t.ms[n / 2 - 1] + t.ms[n / 2]);
+    }
+    fs::remove_all(dir + "/round", ec);
+  }
+
   // diff.png shows Pineda against the scene's oracle.
   RgbaImage diff;
   if (r.pineda.ok && r.llvmpipe.ok)
@@ -361,6 +400,8 @@ bool parse_args(int argc, char** argv, Options& o) {
     else if (arg == "--no-softpipe") o.softpipe = false;
     else if (arg == "--tolerance") o.tolerance = std::atoi(value().c_str());
     else if (arg == "--reps") o.reps = std::max(1, std::atoi(value().c_str()));
+    else if (arg == "--rounds") o.rounds = std::max(1, std::atoi(value().c_str()));
+    else if (arg == "--csv") o.csv = value();
     else if (arg == "--threads") o.threads = std::atoi(value().c_str());
     else if (arg == "--timeout") o.timeout = std::max(1.0, std::strtod(value().c_str(), nullptr));
     else if (arg == "--runner") o.runner = value();
@@ -451,6 +492,24 @@ int main(int argc, char** argv) {
     std::printf("renderers: Pineda '%s', llvmpipe '%s'%s%s%s\n", renderer.pineda.renderer.c_str(),
                 renderer.llvmpipe.renderer.c_str(), o.softpipe ? ", softpipe '" : "",
                 o.softpipe ? renderer.softpipe.renderer.c_str() : "", o.softpipe ? "'" : "");
+  }
+
+  if (!o.csv.empty()) {
+    std::ofstream csv(o.csv);
+    csv << "scene,width,height,pineda_ms,llvmpipe_ms,softpipe_ms,pineda_over_llvmpipe,"
+           "pineda_over_softpipe,bad_percent,max_diff,psnr,passed\n";
+    for (const auto& r : records) {
+      const ManifestEntry* m = nullptr;
+      for (const auto& e : selected) m = e.name == r.name ? &e : m;
+      const DiffStats& vs = r.vs_oracle();
+      csv << r.name << ',' << (m ? m->width : 0) << ',' << (m ? m->height : 0) << ','
+          << r.pineda.median_ms << ',' << r.llvmpipe.median_ms << ',' << r.softpipe.median_ms
+          << ',' << r.ratio_llvmpipe() << ',' << r.ratio_softpipe() << ','
+          << (vs.comparable ? vs.bad_percent : -1.0) << ',' << (vs.comparable ? vs.max_diff : -1)
+          << ',' << (vs.comparable ? vs.psnr : 0.0) << ',' << (r.passed ? 1 : 0) << '\n';
+    }
+    if (!csv) std::fprintf(stderr, "pineda_conformance: cannot write %s\n", o.csv.c_str());
+    else std::printf("csv: %s\n", o.csv.c_str());
   }
 
   // The report covers every scene with a result in the output directory, not only this run's.
