@@ -341,8 +341,7 @@ inline int run(const char* name, int argc, char** argv, App& app,
     glfwTerminate();
     return 1;
   }
-  detail::Runner runner{&app};
-  glfwSetWindowUserPointer(window, &runner);
+  glfwSetWindowUserPointer(window, &app);
   glfwSetKeyCallback(window, detail::on_key);
   glfwSetMouseButtonCallback(window, detail::on_mouse_button);
   glfwSetCursorPosCallback(window, detail::on_cursor);
