@@ -278,12 +278,8 @@ inline int parse_args(const char* name, int argc, char** argv, Options& opt,
 
 namespace detail {
 
-struct Runner {
-  App* app = nullptr;
-};
-
 inline App* app_of(GLFWwindow* w) {
-  return static_cast<Runner*>(glfwGetWindowUserPointer(w))->app;
+  return static_cast<App*>(glfwGetWindowUserPointer(w));
 }
 
 inline void on_key(GLFWwindow* w, int key, int /*scancode*/, int action, int /*mods*/) {
@@ -341,8 +337,7 @@ inline int run(const char* name, int argc, char** argv, App& app,
     glfwTerminate();
     return 1;
   }
-  detail::Runner runner{&app};
-  glfwSetWindowUserPointer(window, &runner);
+  glfwSetWindowUserPointer(window, &app);
   glfwSetKeyCallback(window, detail::on_key);
   glfwSetMouseButtonCallback(window, detail::on_mouse_button);
   glfwSetCursorPosCallback(window, detail::on_cursor);

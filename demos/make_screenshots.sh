@@ -3,6 +3,7 @@
 # on Pineda (LD_LIBRARY_PATH=BUILD/lib) with --pineda, on Mesa llvmpipe with --mesa. Prints the
 # renderer of each picture, which the README's captions name.
 # Usage: demos/make_screenshots.sh --pineda|--mesa [BUILD_DIR] [NAME...]
+# PINEDA_LIB_DIR overrides BUILD_DIR/lib as the place of Pineda's libGL.so.1.
 set -u
 root=$(cd "$(dirname "$0")/.." && pwd)
 mode=${1:-}
@@ -12,7 +13,7 @@ shift || true
 names=("$@")
 [ ${#names[@]} -eq 0 ] && names=(gears cube terrain particles picking viewer)
 case $mode in
---pineda) env_args=(LD_LIBRARY_PATH="$build/lib") ;;
+--pineda) env_args=(LD_LIBRARY_PATH="${PINEDA_LIB_DIR:-$build/lib}") ;;
 --mesa) env_args=(-u LD_LIBRARY_PATH GALLIUM_DRIVER=llvmpipe LIBGL_ALWAYS_SOFTWARE=1) ;;
 *) echo "usage: $0 --pineda|--mesa [BUILD_DIR] [NAME...]" >&2; exit 2 ;;
 esac

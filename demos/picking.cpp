@@ -1,9 +1,9 @@
 // Picking: twelve spinning solids on a grid; a click picks the one under the cursor with the
 // selection buffer (glRenderMode(GL_SELECT), glSelectBuffer, a pick matrix, glPushName /
-// glLoadName with two levels of names: the row, then the object) and draws it highlighted.
-// Headless, the program picks on its own in the last frame: first an empty corner, then the
-// centre of one object (--pick-object K, default 6) or a given pixel (--pick X,Y), and prints
-// the hit records and the object picked.
+// glLoadName with two levels of names: the row, then the object) and draws it highlighted (larger,
+// glowing, outlined). Headless, the program picks on its own in the last frame: first an empty
+// corner, then the centre of one object (--pick-object K, default 6) or a given pixel (--pick X,Y),
+// and prints the hit records and the object picked.
 #include "demo_common.h"
 
 #include <algorithm>
@@ -184,6 +184,16 @@ private:
         if (k == picked_ && !select) {
           const GLfloat none[4] = {0, 0, 0, 1};
           glMaterialfv(GL_FRONT, GL_EMISSION, none);
+          // A yellow outline: the edges of the front faces. The solids are convex, so with back
+          // faces culled these are exactly the visible edges, and no depth test is needed.
+          glDisable(GL_LIGHTING);
+          glDisable(GL_DEPTH_TEST);
+          glPolygonMode(GL_FRONT_AND_BACK, GL_LINE);
+          glColor3f(1.0f, 0.95f, 0.3f);
+          glCallList(lists_ + static_cast<GLuint>(k % kShapes));
+          glPolygonMode(GL_FRONT_AND_BACK, GL_FILL);
+          glEnable(GL_DEPTH_TEST);
+          glEnable(GL_LIGHTING);
         }
         glPopMatrix();
       }

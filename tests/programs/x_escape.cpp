@@ -1,6 +1,7 @@
 // Waits for a top-level X window whose title contains TEXT, prints the title and sends it the
 // ESC key (a KeyPress and a KeyRelease through XSendEvent), which closes a demo in window mode.
-//   x_escape TEXT [SECONDS [PID]]
+// With X and Y, first moves the pointer there (window pixels) and clicks the left button.
+//   x_escape TEXT [SECONDS [PID [X Y]]]
 // Exit status 0 when the window was found and the key sent, 1 when no such window appeared
 // within SECONDS (default 20; the titles seen are printed) or process PID (the program expected
 // to open the window) ended first, 2 when the display cannot be opened.
@@ -45,6 +46,31 @@ Window find_window(Display* dpy, const char* text, std::set<std::string>& seen,
   return found;
 }
 
+void send_click(Display* dpy, Window w, int x, int y) {
+  // The pointer itself moves (the program may ask the server where it is), then the button.
+  XWarpPointer(dpy, None, w, 0, 0, 0, 0, x, y);
+  XSync(dpy, False);
+  std::this_thread::sleep_for(std::chrono::milliseconds(200));
+  for (const int type : {ButtonPress, ButtonRelease}) {
+    XButtonEvent ev;
+    std::memset(&ev, 0, sizeof ev);
+    ev.type = type;
+    ev.display = dpy;
+    ev.window = w;
+    ev.root = DefaultRootWindow(dpy);
+    ev.time = CurrentTime;
+    ev.x = x;
+    ev.y = y;
+    ev.same_screen = True;
+    ev.button = Button1;
+    ev.state = type == ButtonRelease ? Button1Mask : 0;
+    XSendEvent(dpy, w, True, type == ButtonPress ? ButtonPressMask : ButtonReleaseMask,
+               reinterpret_cast<XEvent*>(&ev));
+  }
+  XSync(dpy, False);
+  std::this_thread::sleep_for(std::chrono::milliseconds(300));
+}
+
 void send_key(Display* dpy, Window w, int type, unsigned keycode) {
   XKeyEvent ev;
   std::memset(&ev, 0, sizeof ev);
@@ -63,12 +89,12 @@ void send_key(Display* dpy, Window w, int type, unsigned keycode) {
 } // namespace
 
 int main(int argc, char** argv) {
-  if (argc < 2 || argc > 4) {
-    std::fprintf(stderr, "usage: x_escape TEXT [SECONDS [PID]]\n");
+  if (argc < 2 || argc > 6 || argc == 5) {
+    std::fprintf(stderr, "usage: x_escape TEXT [SECONDS [PID [X Y]]]\n");
     return 2;
   }
   const double seconds = argc >= 3 ? std::atof(argv[2]) : 20.0;
-  const pid_t pid = argc == 4 ? static_cast<pid_t>(std::atol(argv[3])) : 0;
+  const pid_t pid = argc >= 4 ? static_cast<pid_t>(std::atol(argv[3])) : 0;
   Display* dpy = XOpenDisplay(nullptr);
   if (dpy == nullptr) {
     std::fprintf(stderr, "x_escape: cannot open the display\n");
@@ -92,6 +118,7 @@ int main(int argc, char** argv) {
     return 1;
   }
   std::printf("x_escape: window title \"%s\"\n", title.c_str());
+  if (argc == 6) send_click(dpy, w, std::atoi(argv[4]), std::atoi(argv[5]));
   const unsigned keycode = XKeysymToKeycode(dpy, XK_Escape);
   send_key(dpy, w, KeyPress, keycode);
   send_key(dpy, w, KeyRelease, keycode);
