@@ -57,6 +57,46 @@ void emit_rect(const FragCtx& fc, FragInputs& in, int x0, int y0, int x1, int y1
   }
 }
 
+// True when a fragment's only effect is to store its colour in every channel: no depth or
+// stencil test, no alpha test, blending or logic op, full colour mask. Such runs are written
+// straight into the colour buffer.
+bool plain_store(const FragCtx& fc) {
+  const StateKey& k = fc.key;
+  return !k.depth_test && !k.ext() && k.blend_path() == BlendPath::Off &&
+         k.color_path() == ColorPath::All;
+}
+
+// Stores `rgba` into the colour buffer over [x0, x1) x [y0, y1), clipped like emit_rect.
+void store_rect(const FragCtx& fc, const Framebuffer& fb, const uint8_t rgba[4], int x0, int y0,
+                int x1, int y1) {
+  x0 = std::max(x0, fc.clip_x0);
+  y0 = std::max(y0, fc.clip_y0);
+  x1 = std::min(x1, fc.clip_x1 + 1);
+  y1 = std::min(y1, fc.clip_y1 + 1);
+  if (x0 >= x1 || y0 >= y1) return;
+  uint8_t px[4];
+  switch (fb.color_format) {
+  case ColorFormat::RGBA8:
+    std::memcpy(px, rgba, 4);
+    break;
+  case ColorFormat::BGRA8:
+    px[0] = rgba[2], px[1] = rgba[1], px[2] = rgba[0], px[3] = rgba[3];
+    break;
+  case ColorFormat::ARGB8:
+    px[0] = rgba[3], px[1] = rgba[0], px[2] = rgba[1], px[3] = rgba[2];
+    break;
+  case ColorFormat::RGB8:
+    std::memcpy(px, rgba, 3);
+    break;
+  }
+  const size_t bpp = static_cast<size_t>(bytes_per_pixel(fb.color_format));
+  for (int y = y0; y < y1; ++y) {
+    uint8_t* row = fb.color_row(y) + static_cast<size_t>(x0) * bpp;
+    for (int x = x0; x < x1; ++x, row += bpp)
+      std::memcpy(row, px, bpp);
+  }
+}
+
 void set_color(FragInputs& in, const float* rgba) {
   for (int c = 0; c < 4; ++c)
     in.const_color[c] = color_to_unorm8(rgba[c]);
@@ -74,6 +114,7 @@ void draw_pixel_rect(const RasterState& rs, const Framebuffer& fb, const PixelRe
   group_spans(p.w, p.col0, p.x, p.zoom_x, col_lo, col_hi);
   group_spans(p.h, p.row0, p.y, p.zoom_y, row_lo, row_hi);
 
+  const bool direct = plain_store(fc);
   FragInputs in;
   if (r.rgba == nullptr) set_color(in, r.color);
   const double fixed_z = clamp01(r.z) * fc.depth_max;
@@ -89,10 +130,11 @@ void draw_pixel_rect(const RasterState& rs, const Framebuffer& fb, const PixelRe
     double run_z = 0.0;
     const auto flush = [&]() {
       if (!run) return;
+      run = false;
+      if (direct) return store_rect(fc, fb, run_color, run_x0, y0, run_x1, y1);
       std::memcpy(in.const_color, run_color, 4);
       in.z.v0 = run_z;
       emit_rect(fc, in, run_x0, y0, run_x1, y1);
-      run = false;
     };
     for (int n = 0; n < p.w; ++n) {
       const size_t g = row + static_cast<size_t>(n);
