@@ -20,7 +20,7 @@ float clamp01(float v) {
 
 // Window pixels [lo[n], hi[n]) covered by group n along one axis (§3.6.4): the pixel whose
 // centre c satisfies min <= c < max of the group's two edges. Kept far inside the int range.
-void group_spans(int count, int first, float origin, float zoom, std::vector<int>& lo,
+void group_spans(int count, int64_t first, float origin, float zoom, std::vector<int>& lo,
                  std::vector<int>& hi) {
   lo.resize(static_cast<size_t>(count));
   hi.resize(static_cast<size_t>(count));
@@ -30,8 +30,9 @@ void group_spans(int count, int first, float origin, float zoom, std::vector<int
     return static_cast<int>(std::clamp(v, -1073741824.0, 1073741824.0));
   };
   for (int n = 0; n < count; ++n) {
-    const double a = static_cast<double>(origin) + static_cast<double>(zoom) * (first + n);
-    const double b = static_cast<double>(origin) + static_cast<double>(zoom) * (first + n + 1);
+    const double g = static_cast<double>(first) + n;
+    const double a = static_cast<double>(origin) + static_cast<double>(zoom) * g;
+    const double b = static_cast<double>(origin) + static_cast<double>(zoom) * (g + 1.0);
     lo[static_cast<size_t>(n)] = pixel(std::min(a, b));
     hi[static_cast<size_t>(n)] = pixel(std::max(a, b));
   }

@@ -2,6 +2,7 @@
 // when pixel transfer operations are active (§4.3.2; buffers.cpp keeps the direct path).
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <vector>
 
 #include "core/api_util.h"
@@ -45,7 +46,7 @@ void in_strips(PixelPlacement p, size_t per_group, Unpack unpack, Draw draw) {
   const int h = p.h;
   const int rows = static_cast<int>(std::max<size_t>(1, kStripGroups / static_cast<size_t>(p.w)));
   std::vector<T> buf(static_cast<size_t>(std::min(rows, h)) * static_cast<size_t>(p.w) * per_group);
-  const int row0 = p.row0;
+  const int64_t row0 = p.row0;
   for (int m = 0; m < h; m += rows) {
     const int n = std::min(rows, h - m);
     unpack(m, n, buf.data());
@@ -111,8 +112,12 @@ bool read_pixels_transfer(Context* ctx, int x, int y, int w, int h, GLenum forma
   // groups before them (pixels outside the window are undefined, §4.3.2, and left untouched).
   PixelStore st = store_2d(ctx->pack);
   if (st.row_length == 0) st.row_length = w;
-  st.skip_pixels += in.x0 - x;
-  st.skip_rows += in.y0 - y;
+  const int64_t skip_pixels = int64_t{st.skip_pixels} + in.x0 - x;
+  const int64_t skip_rows = int64_t{st.skip_rows} + in.y0 - y;
+  // Offsets beyond the int range address no client memory there could be.
+  if (skip_pixels > INT32_MAX || skip_rows > INT32_MAX) return true;
+  st.skip_pixels = static_cast<int>(skip_pixels);
+  st.skip_rows = static_cast<int>(skip_rows);
   const size_t n = static_cast<size_t>(iw) * static_cast<size_t>(ih);
   const PixelStore tight = tight_store();
   if (depth) {
@@ -158,7 +163,7 @@ void GLAPIENTRY DrawPixels(GLsizei width, GLsizei height, GLenum format, GLenum 
   const auto strip_store = [&](int m) {
     PixelStore s = st;
     if (s.row_length == 0) s.row_length = width;
-    s.skip_rows += m;
+    s.skip_rows = static_cast<int>(std::min<int64_t>(INT32_MAX, int64_t{s.skip_rows} + m));
     return s;
   };
   if (format == GL_STENCIL_INDEX) {
@@ -236,8 +241,8 @@ void GLAPIENTRY CopyPixels(GLint x, GLint y, GLsizei width, GLsizei height, GLen
   validate_state(ctx);
   const int iw = in.x1 - in.x0, ih = in.y1 - in.y0;
   PixelPlacement p = placement_at(ctx, iw, ih);
-  p.col0 = in.x0 - x;
-  p.row0 = in.y0 - y;
+  p.col0 = int64_t{in.x0} - x;
+  p.row0 = int64_t{in.y0} - y;
   // The whole source is read before anything is drawn, so overlapping rectangles copy the
   // old contents (§4.3.3: as if ReadPixels, then DrawPixels).
   const size_t n = static_cast<size_t>(iw) * static_cast<size_t>(ih);
