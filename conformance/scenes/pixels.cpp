@@ -238,7 +238,7 @@ PINEDA_SCENE(pixels_transfer, "Pixel transfer: scale and bias, MAP_COLOR tables,
   const GLfloat g_map[2] = {1.0f, 0.0f};
   // B and A maps given as ushort and uint entries. llvmpipe's mapped blue and alpha ignore
   // B_TO_B and A_TO_A (blue comes out as 3 + 249 b / 255), so both are masked off here.
-  const GLushort b_map[2] = {26214, 39321};         // 0.4, 0.6
+  const GLushort b_map[2] = {26214, 39321};           // 0.4, 0.6
   const GLuint a_map[2] = {1717986918u, 2576980377u}; // 0.4, 0.6
   glPixelMapfv(GL_PIXEL_MAP_R_TO_R, 2, r_map);
   glPixelMapfv(GL_PIXEL_MAP_G_TO_G, 2, g_map);
@@ -664,4 +664,31 @@ PINEDA_SCENE(pixels_read_transfer,
   glDrawPixels(64, 64, GL_RGB, GL_UNSIGNED_SHORT_5_6_5, packed.data());
   glPixelStorei(GL_PACK_ALIGNMENT, 4);
   reset_pixels();
+}
+
+// GL 2.1 §3.9: the colour sum applies to bitmap fragments, which take the raster position's
+// secondary colour (llvmpipe leaves DrawPixels fragments alone, and so does Pineda). One
+// secondary colour for the whole scene: llvmpipe caches bitmaps and draws them with the
+// secondary colour current when its cache is flushed.
+PINEDA_SCENE(
+    pixels_color_sum,
+    "Bitmaps with COLOR_SUM: raster colour plus raster secondary colour; DrawPixels unchanged") {
+  clear_frame(0.0f, 0.0f, 0.0f);
+  reset_pixels();
+  const auto secondary = proc<PFNGLSECONDARYCOLOR3FPROC>("glSecondaryColor3f");
+  glEnable(GL_COLOR_SUM);
+  secondary(0.25f, 0.0f, 0.375f);
+  std::vector<GLubyte> bits(8 * 32);
+  for (size_t i = 0; i < bits.size(); ++i)
+    bits[i] = static_cast<GLubyte>(i % 2 ? 0xf0 : 0x5a);
+  for (int i = 0; i < 6; ++i) {
+    const float* c = palette(i + 10);
+    glColor3f(c[0] * 0.6f, c[1] * 0.6f, c[2] * 0.6f);
+    glRasterPos2i(10 + 40 * i, 10);
+    glBitmap(32, 32, 0, 0, 0, 0, bits.data());
+  }
+  const auto img = image<GLubyte>(32, 32, 4, kRGBA, to_ub);
+  glRasterPos2i(60, 60);
+  glDrawPixels(32, 32, GL_RGBA, GL_UNSIGNED_BYTE, img.data());
+  glDisable(GL_COLOR_SUM);
 }

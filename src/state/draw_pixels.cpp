@@ -218,8 +218,14 @@ void GLAPIENTRY Bitmap(GLsizei width, GLsizei height, GLfloat xorig, GLfloat yor
       const double f = std::floor(static_cast<double>(v));
       return static_cast<int>(std::clamp(f, -1073741824.0, 1073741824.0));
     };
+    // §3.9: the colour sum (on with COLOR_SUM or lighting) adds the raster position's
+    // secondary colour to bitmap fragments. llvmpipe does so for bitmaps, not for DrawPixels.
+    float color[4] = {rp.color[0], rp.color[1], rp.color[2], rp.color[3]};
+    if (ctx->lighting.enabled || ctx->lighting.color_sum)
+      for (int c = 0; c < 3; ++c)
+        color[c] += rp.color2[c];
     draw_bitmap(ctx->raster, ctx->fb, corner(rp.win[0] - xorig + kEps),
-                corner(rp.win[1] - yorig + kEps), width, height, bits.data(), rp.color, rp.win[2]);
+                corner(rp.win[1] - yorig + kEps), width, height, bits.data(), color, rp.win[2]);
   }
   rp.win[0] += xmove;
   rp.win[1] += ymove;

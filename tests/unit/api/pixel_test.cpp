@@ -448,4 +448,17 @@ TEST_F(Pixel, CopyPixelsDepthAndClippedSource) {
   expect_error(GL_NO_ERROR);
 }
 
+TEST_F(Pixel, BitmapTakesTheColourSum) {
+  glEnable(GL_COLOR_SUM);
+  glColor3f(0.0f, 0.5f, 0.0f);
+  glSecondaryColor3f(0.5f, 0.0f, 0.25f);
+  glWindowPos2i(1, 1);
+  GLfloat c2[4];
+  glGetFloatv(GL_CURRENT_RASTER_SECONDARY_COLOR, c2);
+  EXPECT_EQ(c2[0], 0.5f);
+  const GLubyte bit[1] = {0x80};
+  glBitmap(1, 1, 0, 0, 0, 0, bit);
+  EXPECT_EQ(pixel(1, 1), 0xff408080u);
+}
+
 } // namespace
