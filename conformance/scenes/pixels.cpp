@@ -218,7 +218,7 @@ PINEDA_SCENE(pixels_zoom,
 }
 
 PINEDA_SCENE(pixels_transfer, "Pixel transfer: scale and bias, MAP_COLOR tables, colour indices "
-                              "through I_TO_RGBA maps with shift and offset") {
+                              "through the I_TO_RGBA maps") {
   clear_frame(0.0f, 0.0f, 0.0f);
   reset_pixels();
   const int w = 40, h = 40;
@@ -369,9 +369,9 @@ PINEDA_SCENE(pixels_copy,
   glCopyPixels(-20, 30, 60, 50, GL_COLOR);
 }
 
-PINEDA_SCENE(
-    pixels_depth,
-    "Depth DrawPixels and CopyPixels with the depth test: raster colour, depth scale/bias") {
+// clang-format off
+PINEDA_SCENE(pixels_depth, "Depth DrawPixels and CopyPixels with the depth test: raster colour, depth scale/bias") {
+  // clang-format on
   clear_frame(0.0f, 0.0f, 0.0f);
   reset_pixels();
   glEnable(GL_DEPTH_TEST);
@@ -429,10 +429,9 @@ PINEDA_SCENE(
 
 // MAP_STENCIL and INDEX_SHIFT/OFFSET are not used: llvmpipe ignores them when drawing and
 // copying stencil indices (GL 2.1 §3.6.5 applies them; the API tests check Pineda does).
-PINEDA_SCENE(
-    pixels_stencil,
-    "Stencil DrawPixels (write mask, scissor, zoom) and CopyPixels, then stencil-tested quads",
-    .stencil_bits = 8) {
+// clang-format off
+PINEDA_SCENE(pixels_stencil, "Stencil DrawPixels (write mask, scissor, zoom) and CopyPixels, then stencil-tested quads", .stencil_bits = 8) {
+  // clang-format on
   clear_frame(0.0f, 0.0f, 0.0f);
   reset_pixels();
   glClearStencil(0);
@@ -473,9 +472,9 @@ PINEDA_SCENE(
   glDisable(GL_STENCIL_TEST);
 }
 
-PINEDA_SCENE(
-    pixels_window_pos,
-    "glWindowPos2/3 in every type: images and bitmaps at window coordinates, depth from z") {
+// clang-format off
+PINEDA_SCENE(pixels_window_pos, "glWindowPos2/3 in every type: images and bitmaps at window coordinates, depth from z") {
+  // clang-format on
   clear_frame(0.1f, 0.1f, 0.1f);
   reset_pixels();
   const auto wp2i = proc<PFNGLWINDOWPOS2IPROC>("glWindowPos2i");
@@ -670,9 +669,9 @@ PINEDA_SCENE(pixels_read_transfer,
 // secondary colour (llvmpipe leaves DrawPixels fragments alone, and so does Pineda). One
 // secondary colour for the whole scene: llvmpipe caches bitmaps and draws them with the
 // secondary colour current when its cache is flushed.
-PINEDA_SCENE(
-    pixels_color_sum,
-    "Bitmaps with COLOR_SUM: raster colour plus raster secondary colour; DrawPixels unchanged") {
+// clang-format off
+PINEDA_SCENE(pixels_color_sum, "Bitmaps with COLOR_SUM: raster colour plus raster secondary colour; DrawPixels unchanged") {
+  // clang-format on
   clear_frame(0.0f, 0.0f, 0.0f);
   reset_pixels();
   const auto secondary = proc<PFNGLSECONDARYCOLOR3FPROC>("glSecondaryColor3f");
