@@ -98,6 +98,41 @@ void store_rect(const FragCtx& fc, const Framebuffer& fb, const uint8_t rgba[4],
   }
 }
 
+// The plain store of an unzoomed colour rectangle whose first group lands on pixel (x, y):
+// row by row, each group converted and written in the buffer's byte order.
+void store_unzoomed(const FragCtx& fc, const Framebuffer& fb, const float* rgba, int w, int h,
+                    int x, int y) {
+  const int64_t n0 = std::max<int64_t>(0, int64_t{fc.clip_x0} - x);
+  const int64_t n1 = std::min<int64_t>(w, int64_t{fc.clip_x1} + 1 - x);
+  if (n0 >= n1) return;
+  int off[4] = {0, 1, 2, 3}; // byte of R, G, B, A in a stored pixel; -1: not stored
+  switch (fb.color_format) {
+  case ColorFormat::RGBA8:
+    break;
+  case ColorFormat::BGRA8:
+    off[0] = 2, off[2] = 0;
+    break;
+  case ColorFormat::ARGB8:
+    off[0] = 1, off[1] = 2, off[2] = 3, off[3] = 0;
+    break;
+  case ColorFormat::RGB8:
+    off[3] = -1;
+    break;
+  }
+  const int channels = off[3] < 0 ? 3 : 4;
+  const size_t bpp = static_cast<size_t>(bytes_per_pixel(fb.color_format));
+  for (int m = 0; m < h; ++m) {
+    const int64_t py = int64_t{y} + m;
+    if (py < fc.clip_y0 || py > fc.clip_y1) continue;
+    uint8_t* dst = fb.color_row(static_cast<int>(py)) + static_cast<size_t>(x + n0) * bpp;
+    const float* src =
+        rgba + (static_cast<size_t>(m) * static_cast<size_t>(w) + static_cast<size_t>(n0)) * 4;
+    for (int64_t n = n0; n < n1; ++n, dst += bpp, src += 4)
+      for (int c = 0; c < channels; ++c)
+        dst[off[c]] = color_to_unorm8(src[c]);
+  }
+}
+
 void set_color(FragInputs& in, const float* rgba) {
   for (int c = 0; c < 4; ++c)
     in.const_color[c] = color_to_unorm8(rgba[c]);
@@ -108,6 +143,8 @@ void set_color(FragInputs& in, const float* rgba) {
 void draw_pixel_rect(const RasterState& rs, const Framebuffer& fb, const PixelRect& r) {
   const PixelPlacement& p = r.place;
   if (p.w <= 0 || p.h <= 0 || (r.rgba == nullptr) == (r.depth == nullptr)) return;
+  // A raster position given as NaN or infinity (glWindowPos accepts any value) covers no pixel.
+  if (!std::isfinite(p.x) || !std::isfinite(p.y)) return;
   FragCtx fc;
   prepare_fragments(rs, fb, fc);
   if (fc.noop) return;
@@ -116,6 +153,10 @@ void draw_pixel_rect(const RasterState& rs, const Framebuffer& fb, const PixelRe
   group_spans(p.h, p.row0, p.y, p.zoom_y, row_lo, row_hi);
 
   const bool direct = plain_store(fc);
+  if (direct && r.rgba != nullptr && r.present == nullptr && p.zoom_x == 1.0f && p.zoom_y == 1.0f) {
+    // Zoom 1: group (n, m) is the single pixel (col_lo[0] + n, row_lo[0] + m).
+    return store_unzoomed(fc, fb, r.rgba, p.w, p.h, col_lo[0], row_lo[0]);
+  }
   FragInputs in;
   if (r.rgba == nullptr) set_color(in, r.color);
   const double fixed_z = clamp01(r.z) * fc.depth_max;
@@ -176,7 +217,8 @@ void draw_pixel_rect(const RasterState& rs, const Framebuffer& fb, const PixelRe
 
 void draw_stencil_rect(const RasterState& rs, const Framebuffer& fb, const PixelPlacement& p,
                        const uint32_t* index, const uint8_t* present) {
-  if (fb.stencil == nullptr || p.w <= 0 || p.h <= 0) return;
+  if (fb.stencil == nullptr || p.w <= 0 || p.h <= 0 || !std::isfinite(p.x) || !std::isfinite(p.y))
+    return;
   int cx0 = 0, cy0 = 0, cx1 = fb.width, cy1 = fb.height;
   if (rs.scissor_test) {
     cx0 = std::max(cx0, rs.scissor[0]);

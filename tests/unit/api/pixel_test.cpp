@@ -461,4 +461,17 @@ TEST_F(Pixel, BitmapTakesTheColourSum) {
   EXPECT_EQ(pixel(1, 1), 0xff408080u);
 }
 
+TEST_F(Pixel, NonFiniteWindowPositionsDrawNothing) {
+  const GLubyte red[16] = {255, 0, 0, 255, 255, 0, 0, 255, 255, 0, 0, 255, 255, 0, 0, 255};
+  const std::vector<uint8_t> before = buf_;
+  for (float v : {std::nanf(""), INFINITY, -INFINITY, 1e30f}) {
+    glWindowPos2f(v, 1.0f);
+    glDrawPixels(2, 2, GL_RGBA, GL_UNSIGNED_BYTE, red);
+    glBitmap(2, 2, 0, 0, v, v, red);
+    glCopyPixels(0, 0, 4, 4, GL_COLOR);
+  }
+  EXPECT_EQ(buf_, before);
+  expect_error(GL_NO_ERROR);
+}
+
 } // namespace
