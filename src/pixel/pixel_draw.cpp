@@ -20,7 +20,7 @@ float clamp01(float v) {
 
 // Window pixels [lo[n], hi[n]) covered by group n along one axis (§3.6.4): the pixel whose
 // centre c satisfies min <= c < max of the group's two edges. Kept far inside the int range.
-void group_spans(int count, int first, float origin, float zoom, std::vector<int>& lo,
+void group_spans(int count, int64_t first, float origin, float zoom, std::vector<int>& lo,
                  std::vector<int>& hi) {
   lo.resize(static_cast<size_t>(count));
   hi.resize(static_cast<size_t>(count));
@@ -30,8 +30,9 @@ void group_spans(int count, int first, float origin, float zoom, std::vector<int
     return static_cast<int>(std::clamp(v, -1073741824.0, 1073741824.0));
   };
   for (int n = 0; n < count; ++n) {
-    const double a = static_cast<double>(origin) + static_cast<double>(zoom) * (first + n);
-    const double b = static_cast<double>(origin) + static_cast<double>(zoom) * (first + n + 1);
+    const double g = static_cast<double>(first) + n;
+    const double a = static_cast<double>(origin) + static_cast<double>(zoom) * g;
+    const double b = static_cast<double>(origin) + static_cast<double>(zoom) * (g + 1.0);
     lo[static_cast<size_t>(n)] = pixel(std::min(a, b));
     hi[static_cast<size_t>(n)] = pixel(std::max(a, b));
   }
@@ -57,6 +58,81 @@ void emit_rect(const FragCtx& fc, FragInputs& in, int x0, int y0, int x1, int y1
   }
 }
 
+// True when a fragment's only effect is to store its colour in every channel: no depth or
+// stencil test, no alpha test, blending or logic op, full colour mask. Such runs are written
+// straight into the colour buffer.
+bool plain_store(const FragCtx& fc) {
+  const StateKey& k = fc.key;
+  return !k.depth_test && !k.ext() && k.blend_path() == BlendPath::Off &&
+         k.color_path() == ColorPath::All;
+}
+
+// Stores `rgba` into the colour buffer over [x0, x1) x [y0, y1), clipped like emit_rect.
+void store_rect(const FragCtx& fc, const Framebuffer& fb, const uint8_t rgba[4], int x0, int y0,
+                int x1, int y1) {
+  x0 = std::max(x0, fc.clip_x0);
+  y0 = std::max(y0, fc.clip_y0);
+  x1 = std::min(x1, fc.clip_x1 + 1);
+  y1 = std::min(y1, fc.clip_y1 + 1);
+  if (x0 >= x1 || y0 >= y1) return;
+  uint8_t px[4];
+  switch (fb.color_format) {
+  case ColorFormat::RGBA8:
+    std::memcpy(px, rgba, 4);
+    break;
+  case ColorFormat::BGRA8:
+    px[0] = rgba[2], px[1] = rgba[1], px[2] = rgba[0], px[3] = rgba[3];
+    break;
+  case ColorFormat::ARGB8:
+    px[0] = rgba[3], px[1] = rgba[0], px[2] = rgba[1], px[3] = rgba[2];
+    break;
+  case ColorFormat::RGB8:
+    std::memcpy(px, rgba, 3);
+    break;
+  }
+  const size_t bpp = static_cast<size_t>(bytes_per_pixel(fb.color_format));
+  for (int y = y0; y < y1; ++y) {
+    uint8_t* row = fb.color_row(y) + static_cast<size_t>(x0) * bpp;
+    for (int x = x0; x < x1; ++x, row += bpp)
+      std::memcpy(row, px, bpp);
+  }
+}
+
+// The plain store of an unzoomed colour rectangle whose first group lands on pixel (x, y):
+// row by row, each group converted and written in the buffer's byte order.
+void store_unzoomed(const FragCtx& fc, const Framebuffer& fb, const float* rgba, int w, int h,
+                    int x, int y) {
+  const int64_t n0 = std::max<int64_t>(0, int64_t{fc.clip_x0} - x);
+  const int64_t n1 = std::min<int64_t>(w, int64_t{fc.clip_x1} + 1 - x);
+  if (n0 >= n1) return;
+  int off[4] = {0, 1, 2, 3}; // byte of R, G, B, A in a stored pixel; -1: not stored
+  switch (fb.color_format) {
+  case ColorFormat::RGBA8:
+    break;
+  case ColorFormat::BGRA8:
+    off[0] = 2, off[2] = 0;
+    break;
+  case ColorFormat::ARGB8:
+    off[0] = 1, off[1] = 2, off[2] = 3, off[3] = 0;
+    break;
+  case ColorFormat::RGB8:
+    off[3] = -1;
+    break;
+  }
+  const int channels = off[3] < 0 ? 3 : 4;
+  const size_t bpp = static_cast<size_t>(bytes_per_pixel(fb.color_format));
+  for (int m = 0; m < h; ++m) {
+    const int64_t py = int64_t{y} + m;
+    if (py < fc.clip_y0 || py > fc.clip_y1) continue;
+    uint8_t* dst = fb.color_row(static_cast<int>(py)) + static_cast<size_t>(x + n0) * bpp;
+    const float* src =
+        rgba + (static_cast<size_t>(m) * static_cast<size_t>(w) + static_cast<size_t>(n0)) * 4;
+    for (int64_t n = n0; n < n1; ++n, dst += bpp, src += 4)
+      for (int c = 0; c < channels; ++c)
+        dst[off[c]] = color_to_unorm8(src[c]);
+  }
+}
+
 void set_color(FragInputs& in, const float* rgba) {
   for (int c = 0; c < 4; ++c)
     in.const_color[c] = color_to_unorm8(rgba[c]);
@@ -67,6 +143,8 @@ void set_color(FragInputs& in, const float* rgba) {
 void draw_pixel_rect(const RasterState& rs, const Framebuffer& fb, const PixelRect& r) {
   const PixelPlacement& p = r.place;
   if (p.w <= 0 || p.h <= 0 || (r.rgba == nullptr) == (r.depth == nullptr)) return;
+  // A raster position given as NaN or infinity (glWindowPos accepts any value) covers no pixel.
+  if (!std::isfinite(p.x) || !std::isfinite(p.y)) return;
   FragCtx fc;
   prepare_fragments(rs, fb, fc);
   if (fc.noop) return;
@@ -74,6 +152,11 @@ void draw_pixel_rect(const RasterState& rs, const Framebuffer& fb, const PixelRe
   group_spans(p.w, p.col0, p.x, p.zoom_x, col_lo, col_hi);
   group_spans(p.h, p.row0, p.y, p.zoom_y, row_lo, row_hi);
 
+  const bool direct = plain_store(fc);
+  if (direct && r.rgba != nullptr && r.present == nullptr && p.zoom_x == 1.0f && p.zoom_y == 1.0f) {
+    // Zoom 1: group (n, m) is the single pixel (col_lo[0] + n, row_lo[0] + m).
+    return store_unzoomed(fc, fb, r.rgba, p.w, p.h, col_lo[0], row_lo[0]);
+  }
   FragInputs in;
   if (r.rgba == nullptr) set_color(in, r.color);
   const double fixed_z = clamp01(r.z) * fc.depth_max;
@@ -89,10 +172,11 @@ void draw_pixel_rect(const RasterState& rs, const Framebuffer& fb, const PixelRe
     double run_z = 0.0;
     const auto flush = [&]() {
       if (!run) return;
+      run = false;
+      if (direct) return store_rect(fc, fb, run_color, run_x0, y0, run_x1, y1);
       std::memcpy(in.const_color, run_color, 4);
       in.z.v0 = run_z;
       emit_rect(fc, in, run_x0, y0, run_x1, y1);
-      run = false;
     };
     for (int n = 0; n < p.w; ++n) {
       const size_t g = row + static_cast<size_t>(n);
@@ -133,7 +217,8 @@ void draw_pixel_rect(const RasterState& rs, const Framebuffer& fb, const PixelRe
 
 void draw_stencil_rect(const RasterState& rs, const Framebuffer& fb, const PixelPlacement& p,
                        const uint32_t* index, const uint8_t* present) {
-  if (fb.stencil == nullptr || p.w <= 0 || p.h <= 0) return;
+  if (fb.stencil == nullptr || p.w <= 0 || p.h <= 0 || !std::isfinite(p.x) || !std::isfinite(p.y))
+    return;
   int cx0 = 0, cy0 = 0, cx1 = fb.width, cy1 = fb.height;
   if (rs.scissor_test) {
     cx0 = std::max(cx0, rs.scissor[0]);

@@ -17,7 +17,7 @@ namespace pineda {
 // A sub-rectangle of a larger one starts at group (col0, row0) of it.
 struct PixelPlacement {
   int w = 0, h = 0;
-  int col0 = 0, row0 = 0;
+  int64_t col0 = 0, row0 = 0;
   float x = 0.0f, y = 0.0f; // the current raster position
   float zoom_x = 1.0f, zoom_y = 1.0f;
 };

@@ -169,6 +169,15 @@ void decode_color_row(const uint8_t* row, int w, GLenum type, const FormatMap& f
     }
     return;
   }
+  if (type == GL_UNSIGNED_BYTE) { // the common case, without the per-element type switch
+    for (int i = 0; i < w; ++i) {
+      const uint8_t* p = row + static_cast<size_t>(i) * static_cast<size_t>(fm.n);
+      for (int c = 0; c < fm.n; ++c)
+        put_component(rgba + static_cast<size_t>(i) * 4, fm.dst[c],
+                      static_cast<float>(p[c]) / 255.0f);
+    }
+    return;
+  }
   const size_t s = static_cast<size_t>(pixel_type_size(type));
   for (int i = 0; i < w; ++i) {
     const uint8_t* p = row + static_cast<size_t>(i) * static_cast<size_t>(fm.n) * s;

@@ -2,6 +2,7 @@
 // when pixel transfer operations are active (§4.3.2; buffers.cpp keeps the direct path).
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <vector>
 
 #include "core/api_util.h"
@@ -18,12 +19,21 @@ namespace {
 // Groups converted per step, so that huge images do not need a float copy of themselves.
 constexpr size_t kStripGroups = size_t{1} << 16;
 
+// GL 2.1 §3.6.4 places group (n, m) at (x_rp + z_x n, y_rp + z_y m). The raster position is
+// rounded to the nearest integer first, as SGI's implementation did and Mesa does "to satisfy
+// conformance tests": a position like 60.5 puts the image at 61, and reductions sample the
+// groups Mesa samples. For positions off the half-integers and integral zooms this is exactly
+// the spec's placement.
+float round_raster(float v) {
+  return std::isfinite(v) ? static_cast<float>(std::floor(static_cast<double>(v) + 0.5)) : v;
+}
+
 PixelPlacement placement_at(const Context* ctx, int w, int h) {
   PixelPlacement p;
   p.w = w;
   p.h = h;
-  p.x = ctx->raster_pos.win[0];
-  p.y = ctx->raster_pos.win[1];
+  p.x = round_raster(ctx->raster_pos.win[0]);
+  p.y = round_raster(ctx->raster_pos.win[1]);
   p.zoom_x = ctx->pixel_transfer.zoom_x;
   p.zoom_y = ctx->pixel_transfer.zoom_y;
   return p;
@@ -36,7 +46,7 @@ void in_strips(PixelPlacement p, size_t per_group, Unpack unpack, Draw draw) {
   const int h = p.h;
   const int rows = static_cast<int>(std::max<size_t>(1, kStripGroups / static_cast<size_t>(p.w)));
   std::vector<T> buf(static_cast<size_t>(std::min(rows, h)) * static_cast<size_t>(p.w) * per_group);
-  const int row0 = p.row0;
+  const int64_t row0 = p.row0;
   for (int m = 0; m < h; m += rows) {
     const int n = std::min(rows, h - m);
     unpack(m, n, buf.data());
@@ -102,8 +112,12 @@ bool read_pixels_transfer(Context* ctx, int x, int y, int w, int h, GLenum forma
   // groups before them (pixels outside the window are undefined, §4.3.2, and left untouched).
   PixelStore st = store_2d(ctx->pack);
   if (st.row_length == 0) st.row_length = w;
-  st.skip_pixels += in.x0 - x;
-  st.skip_rows += in.y0 - y;
+  const int64_t skip_pixels = int64_t{st.skip_pixels} + in.x0 - x;
+  const int64_t skip_rows = int64_t{st.skip_rows} + in.y0 - y;
+  // Offsets beyond the int range address no client memory there could be.
+  if (skip_pixels > INT32_MAX || skip_rows > INT32_MAX) return true;
+  st.skip_pixels = static_cast<int>(skip_pixels);
+  st.skip_rows = static_cast<int>(skip_rows);
   const size_t n = static_cast<size_t>(iw) * static_cast<size_t>(ih);
   const PixelStore tight = tight_store();
   if (depth) {
@@ -149,7 +163,7 @@ void GLAPIENTRY DrawPixels(GLsizei width, GLsizei height, GLenum format, GLenum 
   const auto strip_store = [&](int m) {
     PixelStore s = st;
     if (s.row_length == 0) s.row_length = width;
-    s.skip_rows += m;
+    s.skip_rows = static_cast<int>(std::min<int64_t>(INT32_MAX, int64_t{s.skip_rows} + m));
     return s;
   };
   if (format == GL_STENCIL_INDEX) {
@@ -204,8 +218,14 @@ void GLAPIENTRY Bitmap(GLsizei width, GLsizei height, GLfloat xorig, GLfloat yor
       const double f = std::floor(static_cast<double>(v));
       return static_cast<int>(std::clamp(f, -1073741824.0, 1073741824.0));
     };
+    // §3.9: the colour sum (on with COLOR_SUM or lighting) adds the raster position's
+    // secondary colour to bitmap fragments. llvmpipe does so for bitmaps, not for DrawPixels.
+    float color[4] = {rp.color[0], rp.color[1], rp.color[2], rp.color[3]};
+    if (ctx->lighting.enabled || ctx->lighting.color_sum)
+      for (int c = 0; c < 3; ++c)
+        color[c] += rp.color2[c];
     draw_bitmap(ctx->raster, ctx->fb, corner(rp.win[0] - xorig + kEps),
-                corner(rp.win[1] - yorig + kEps), width, height, bits.data(), rp.color, rp.win[2]);
+                corner(rp.win[1] - yorig + kEps), width, height, bits.data(), color, rp.win[2]);
   }
   rp.win[0] += xmove;
   rp.win[1] += ymove;
@@ -227,8 +247,8 @@ void GLAPIENTRY CopyPixels(GLint x, GLint y, GLsizei width, GLsizei height, GLen
   validate_state(ctx);
   const int iw = in.x1 - in.x0, ih = in.y1 - in.y0;
   PixelPlacement p = placement_at(ctx, iw, ih);
-  p.col0 = in.x0 - x;
-  p.row0 = in.y0 - y;
+  p.col0 = int64_t{in.x0} - x;
+  p.row0 = int64_t{in.y0} - y;
   // The whole source is read before anything is drawn, so overlapping rectangles copy the
   // old contents (§4.3.3: as if ReadPixels, then DrawPixels).
   const size_t n = static_cast<size_t>(iw) * static_cast<size_t>(ih);

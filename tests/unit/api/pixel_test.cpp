@@ -371,4 +371,107 @@ TEST_F(Pixel, AttribStackSavesPixelModeAndRasterPosition) {
   EXPECT_EQ(pos[1], 6.0f);
 }
 
+TEST_F(Pixel, ColorIndexAndStencilTransferOnDraw) {
+  // GL 2.1 §3.6.5: shift/offset, then the I_TO_x maps (2^n entries, index masked).
+  const GLfloat r[4] = {0.0f, 1.0f, 0.0f, 0.0f};
+  const GLfloat g[4] = {0.0f, 0.0f, 1.0f, 0.0f};
+  const GLfloat one[1] = {1.0f};
+  glPixelMapfv(GL_PIXEL_MAP_I_TO_R, 4, r);
+  glPixelMapfv(GL_PIXEL_MAP_I_TO_G, 4, g);
+  glPixelMapfv(GL_PIXEL_MAP_I_TO_A, 1, one);
+  glPixelTransferi(GL_INDEX_SHIFT, 1);
+  glPixelTransferi(GL_INDEX_OFFSET, -1);
+  glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+  const GLubyte idx[2] = {1, 3}; // (1 << 1) - 1 = 1: red; (3 << 1) - 1 = 5 & 3 = 1: red
+  const GLushort idx2[1] = {2};  // 3 & 3 = 3: black
+  glWindowPos2i(0, 0);
+  glDrawPixels(2, 1, GL_COLOR_INDEX, GL_UNSIGNED_BYTE, idx);
+  glWindowPos2i(2, 0);
+  glDrawPixels(1, 1, GL_COLOR_INDEX, GL_UNSIGNED_SHORT, idx2);
+  EXPECT_EQ(pixel(0, 0), 0xff0000ffu);
+  EXPECT_EQ(pixel(1, 0), 0xff0000ffu);
+  EXPECT_EQ(pixel(2, 0), 0xff000000u);
+  // MAP_STENCIL on DrawPixels of stencil indices.
+  glPixelTransferi(GL_INDEX_SHIFT, 0);
+  glPixelTransferi(GL_INDEX_OFFSET, 0);
+  const GLuint smap[2] = {7, 9};
+  glPixelMapuiv(GL_PIXEL_MAP_S_TO_S, 2, smap);
+  glPixelTransferi(GL_MAP_STENCIL, 1);
+  const GLubyte s[2] = {0, 3};
+  glWindowPos2i(0, 4);
+  glDrawPixels(2, 1, GL_STENCIL_INDEX, GL_UNSIGNED_BYTE, s);
+  glPixelTransferi(GL_MAP_STENCIL, 0);
+  GLubyte sb[2] = {};
+  glReadPixels(0, 4, 2, 1, GL_STENCIL_INDEX, GL_UNSIGNED_BYTE, sb);
+  EXPECT_EQ(sb[0], 7);
+  EXPECT_EQ(sb[1], 9);
+}
+
+TEST_F(Pixel, RasterPositionIsRoundedForImagesNotBitmaps) {
+  const GLubyte red[4] = {255, 0, 0, 255};
+  glWindowPos2f(3.5f, 2.49f); // rounds to (4, 2), as SGI's implementation and Mesa place it
+  glDrawPixels(1, 1, GL_RGBA, GL_UNSIGNED_BYTE, red);
+  EXPECT_EQ(pixel(4, 2), 0xff0000ffu);
+  EXPECT_EQ(pixel(3, 2), 0u);
+  // Bitmaps use floor(x_rp - x_bo) (§3.7).
+  const GLubyte bit[1] = {0x80};
+  glColor3f(0.0f, 1.0f, 0.0f);
+  glWindowPos2f(6.9f, 2.0f);
+  glBitmap(1, 1, 0.0f, 0.0f, 0.0f, 0.0f, bit);
+  EXPECT_EQ(pixel(6, 2), 0xff00ff00u);
+}
+
+TEST_F(Pixel, CopyPixelsDepthAndClippedSource) {
+  glClearDepth(0.5);
+  glClear(GL_DEPTH_BUFFER_BIT);
+  glWindowPos2i(0, 0);
+  const GLfloat z[2] = {0.125f, 0.875f};
+  glEnable(GL_DEPTH_TEST);
+  glDepthFunc(GL_ALWAYS);
+  glDrawPixels(2, 1, GL_DEPTH_COMPONENT, GL_FLOAT, z);
+  glWindowPos2i(10, 10);
+  glPixelTransferf(GL_DEPTH_BIAS, 0.0625f);
+  glCopyPixels(0, 0, 2, 1, GL_DEPTH);
+  glPixelTransferf(GL_DEPTH_BIAS, 0.0f);
+  GLfloat back[2] = {};
+  glReadPixels(10, 10, 2, 1, GL_DEPTH_COMPONENT, GL_FLOAT, back);
+  EXPECT_NEAR(back[0], 0.1875f, 1e-6);
+  EXPECT_NEAR(back[1], 0.9375f, 1e-6);
+  // A source half outside the window lands at its place in the rectangle.
+  const GLubyte blue[4] = {0, 0, 255, 255};
+  glDisable(GL_DEPTH_TEST);
+  glWindowPos2i(0, 20);
+  glDrawPixels(1, 1, GL_RGBA, GL_UNSIGNED_BYTE, blue);
+  glWindowPos2i(20, 20);
+  glCopyPixels(-3, 20, 5, 1, GL_COLOR);
+  EXPECT_EQ(pixel(23, 20), 0xffff0000u);
+  expect_error(GL_NO_ERROR);
+}
+
+TEST_F(Pixel, BitmapTakesTheColourSum) {
+  glEnable(GL_COLOR_SUM);
+  glColor3f(0.0f, 0.5f, 0.0f);
+  glSecondaryColor3f(0.5f, 0.0f, 0.25f);
+  glWindowPos2i(1, 1);
+  GLfloat c2[4];
+  glGetFloatv(GL_CURRENT_RASTER_SECONDARY_COLOR, c2);
+  EXPECT_EQ(c2[0], 0.5f);
+  const GLubyte bit[1] = {0x80};
+  glBitmap(1, 1, 0, 0, 0, 0, bit);
+  EXPECT_EQ(pixel(1, 1), 0xff408080u);
+}
+
+TEST_F(Pixel, NonFiniteWindowPositionsDrawNothing) {
+  const GLubyte red[16] = {255, 0, 0, 255, 255, 0, 0, 255, 255, 0, 0, 255, 255, 0, 0, 255};
+  const std::vector<uint8_t> before = buf_;
+  for (float v : {std::nanf(""), INFINITY, -INFINITY, 1e30f}) {
+    glWindowPos2f(v, 1.0f);
+    glDrawPixels(2, 2, GL_RGBA, GL_UNSIGNED_BYTE, red);
+    glBitmap(2, 2, 0, 0, v, v, red);
+    glCopyPixels(0, 0, 4, 4, GL_COLOR);
+  }
+  EXPECT_EQ(buf_, before);
+  expect_error(GL_NO_ERROR);
+}
+
 } // namespace

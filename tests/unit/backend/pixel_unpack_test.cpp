@@ -444,5 +444,91 @@ TEST(PixelRoundTrip, EveryTypeThroughPackAndUnpack) {
   }
 }
 
+// client_image_bytes covers every byte the unpackers read and the packers write, for every
+// format/type pair and a spread of store parameters (the sanitizer build checks the reads; the
+// guard bytes check the writes here).
+TEST(PixelLayout, AccessesStayInsideClientImageBytes) {
+  const GLenum formats[] = {GL_COLOR_INDEX,
+                            GL_STENCIL_INDEX,
+                            GL_DEPTH_COMPONENT,
+                            GL_RED,
+                            GL_GREEN,
+                            GL_BLUE,
+                            GL_ALPHA,
+                            GL_RGB,
+                            GL_RGBA,
+                            GL_BGR,
+                            GL_BGRA,
+                            GL_LUMINANCE,
+                            GL_LUMINANCE_ALPHA};
+  const GLenum types[] = {GL_UNSIGNED_BYTE,
+                          GL_BYTE,
+                          GL_UNSIGNED_SHORT,
+                          GL_SHORT,
+                          GL_UNSIGNED_INT,
+                          GL_INT,
+                          GL_FLOAT,
+                          GL_BITMAP,
+                          GL_UNSIGNED_BYTE_3_3_2,
+                          GL_UNSIGNED_BYTE_2_3_3_REV,
+                          GL_UNSIGNED_SHORT_5_6_5,
+                          GL_UNSIGNED_SHORT_5_6_5_REV,
+                          GL_UNSIGNED_SHORT_4_4_4_4,
+                          GL_UNSIGNED_SHORT_4_4_4_4_REV,
+                          GL_UNSIGNED_SHORT_5_5_5_1,
+                          GL_UNSIGNED_SHORT_1_5_5_5_REV,
+                          GL_UNSIGNED_INT_8_8_8_8,
+                          GL_UNSIGNED_INT_8_8_8_8_REV,
+                          GL_UNSIGNED_INT_10_10_10_2,
+                          GL_UNSIGNED_INT_2_10_10_10_REV};
+  uint32_t seed = 12345;
+  const auto rnd = [&](int n) {
+    seed = seed * 1664525u + 1013904223u;
+    return static_cast<int>((seed >> 8) % static_cast<uint32_t>(n));
+  };
+  const int aligns[4] = {1, 2, 4, 8};
+  int checked = 0;
+  for (GLenum f : formats) {
+    for (GLenum t : types) {
+      if (check_pixel_format_type(f, t) != GL_NO_ERROR) continue;
+      for (int rep = 0; rep < 6; ++rep) {
+        const int w = 1 + rnd(13), h = 1 + rnd(5), d = 1 + rnd(3);
+        PixelStore st;
+        st.alignment = aligns[rnd(4)];
+        st.row_length = rnd(2) ? 0 : w + rnd(5);
+        st.skip_pixels = rnd(4);
+        st.skip_rows = rnd(3);
+        st.image_height = rnd(2) ? 0 : h + rnd(3);
+        st.skip_images = rnd(2);
+        st.swap_bytes = rnd(2) != 0;
+        st.lsb_first = rnd(2) != 0;
+        const size_t bytes = client_image_bytes(w, h, d, f, t, st);
+        ASSERT_GT(bytes, 0u);
+        const size_t groups = static_cast<size_t>(w * h * d);
+        std::vector<uint8_t> mem(bytes + 16, 0x5a);
+        std::vector<float> rgba(groups * 4), depth(groups);
+        std::vector<uint32_t> index(groups, 1);
+        const PixelTransfer x;
+        const bool index_format = f == GL_COLOR_INDEX || f == GL_STENCIL_INDEX;
+        if (f == GL_DEPTH_COMPONENT) {
+          unpack_depth(mem.data(), w, h, d, t, st, x, depth.data());
+          pack_depth(depth.data(), w, h, d, t, st, mem.data());
+        } else if (index_format) {
+          unpack_index(mem.data(), w, h, d, f, t, st, x, index.data());
+          pack_index(index.data(), w, h, d, t, st, mem.data());
+        }
+        if (f != GL_DEPTH_COMPONENT && f != GL_STENCIL_INDEX) {
+          unpack_rgba(mem.data(), w, h, d, f, t, st, x, rgba.data());
+          if (f != GL_COLOR_INDEX) pack_rgba(rgba.data(), w, h, d, f, t, st, mem.data());
+        }
+        for (size_t i = bytes; i < mem.size(); ++i)
+          ASSERT_EQ(mem[i], 0x5a) << std::hex << f << " " << t << std::dec << " byte " << i;
+        ++checked;
+      }
+    }
+  }
+  EXPECT_GT(checked, 300);
+}
+
 } // namespace
 } // namespace pineda
