@@ -11,6 +11,7 @@
 #include "geometry/geometry.h"
 #include "pixel/pixel_draw.h"
 #include "pixel/unpack.h"
+#include "state/select.h"
 
 namespace pineda {
 
@@ -92,6 +93,13 @@ PixelStore tight_store() {
   return st;
 }
 
+// SELECT and FEEDBACK render modes: a pixel rectangle or bitmap at a valid raster position
+// becomes `token` and that position in the feedback buffer (§5.3), and nothing else.
+void raster_token(Context* ctx, GLenum token) {
+  const RasterPos& rp = ctx->raster_pos;
+  if (rp.valid) feedback_raster_token(ctx, token, rp.win, rp.color, rp.tex[0]);
+}
+
 } // namespace
 
 // GL 2.1 §4.3.2 with pixel transfer operations that can change the result: the framebuffer
@@ -151,6 +159,9 @@ void GLAPIENTRY DrawPixels(GLsizei width, GLsizei height, GLenum format, GLenum 
   if ((format == GL_STENCIL_INDEX && ctx->fb.stencil == nullptr) ||
       (format == GL_DEPTH_COMPONENT && ctx->fb.depth == nullptr))
     return record_error(ctx, GL_INVALID_OPERATION, "glDrawPixels");
+  // §5.3: in feedback mode a valid raster position writes a DRAW_PIXEL_TOKEN; in selection and
+  // feedback mode no fragments are made (§5.2).
+  if (!render_mode_is_render(ctx)) return raster_token(ctx, GL_DRAW_PIXEL_TOKEN);
   // §3.6.4: with an invalid raster position DrawPixels is ignored.
   if (!ctx->raster_pos.valid || width == 0 || height == 0 || pixels == nullptr ||
       ctx->fb.color == nullptr)
@@ -199,7 +210,9 @@ void GLAPIENTRY Bitmap(GLsizei width, GLsizei height, GLfloat xorig, GLfloat yor
   RasterPos& rp = ctx->raster_pos;
   // §3.7: with an invalid raster position the bitmap is ignored, the position not moved.
   if (!rp.valid) return;
-  if (bitmap != nullptr && width > 0 && height > 0 && ctx->fb.color != nullptr) {
+  if (!render_mode_is_render(ctx)) {
+    raster_token(ctx, GL_BITMAP_TOKEN); // §5.3; the raster position still moves
+  } else if (bitmap != nullptr && width > 0 && height > 0 && ctx->fb.color != nullptr) {
     validate_state(ctx);
     // Unpacked like DrawPixels of COLOR_INDEX / BITMAP, before any conversion (§3.7).
     const size_t n = static_cast<size_t>(width) * static_cast<size_t>(height);
@@ -239,6 +252,7 @@ void GLAPIENTRY CopyPixels(GLint x, GLint y, GLsizei width, GLsizei height, GLen
   if ((type == GL_DEPTH && ctx->fb.depth == nullptr) ||
       (type == GL_STENCIL && ctx->fb.stencil == nullptr))
     return record_error(ctx, GL_INVALID_OPERATION, "glCopyPixels");
+  if (!render_mode_is_render(ctx)) return raster_token(ctx, GL_COPY_PIXEL_TOKEN); // §5.3
   if (!ctx->raster_pos.valid || ctx->fb.color == nullptr) return;
   // Source pixels outside the window are undefined (§4.3.2); Pineda makes no fragments for
   // them, so only the part inside is read and drawn, at its place in the full rectangle.

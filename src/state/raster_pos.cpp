@@ -9,6 +9,7 @@
 #include "dispatch.h"
 #include "geometry/geometry.h"
 #include "geometry/light_eval.h"
+#include "state/select.h"
 
 namespace pineda {
 
@@ -50,6 +51,8 @@ void raster_pos(float x, float y, float z, float w) {
   rp.win[2] = v.win[2];
   rp.win[3] = clip.w;
   rp.valid = true;
+  // §5.2: in selection mode a valid raster position is a hit.
+  select_raster_hit(ctx, rp.win[2]);
   // §2.13: the distance from the eye-coordinate origin (fog source FRAGMENT_DEPTH).
   rp.distance = std::sqrt(eye.x * eye.x + eye.y * eye.y + eye.z * eye.z);
   // Colours "just as is done for a vertex" (§2.14): lit, or the clamped current colours.
@@ -90,6 +93,7 @@ void window_pos(float x, float y, float z) {
   rp.win[2] = static_cast<float>(z <= 0.0f ? n : z >= 1.0f ? f : n + z * (f - n));
   rp.win[3] = 1.0f;
   rp.valid = true;
+  select_raster_hit(ctx, rp.win[2]); // §5.2, as for RasterPos
   rp.distance = 0.0f;
   for (int c = 0; c < 4; ++c)
     rp.color[c] = clamp01(ctx->cur_color[c]);
