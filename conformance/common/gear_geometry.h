@@ -1,7 +1,9 @@
 // A glxgears-style toothed wheel in GL 1.0 immediate-mode calls, shared by the display-list
 // conformance scene (conformance/scenes/dlist.cpp) and the display-list benchmark
-// (bench/dlist_bench.cpp). The caller includes <GL/gl.h> (Mesa's or Pineda's).
+// (bench/dlist_bench.cpp); <GL/gl.h> is Mesa's for the former and Pineda's for the latter.
 #pragma once
+
+#include <GL/gl.h>
 
 #include <cmath>
 

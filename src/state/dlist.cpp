@@ -168,6 +168,9 @@ void replay_block(const void* args) {
                           b->indices.empty() ? "glDrawArrays" : "glDrawElements");
     return draw_block(ctx, *b);
   }
+  // §2.6.3: Rect between Begin and End is INVALID_OPERATION and draws nothing.
+  if (b->rect && ctx->begin_mode != kOutsideBeginEnd)
+    return record_error(ctx, GL_INVALID_OPERATION, "glRect");
   if (ctx->begin_mode != kOutsideBeginEnd || !b->has_end) return replay_block_calls(*b);
   // What Begin, the vertices and End do (§2.6.1), without the calls.
   if (!b->verts.empty()) draw_block(ctx, *b);

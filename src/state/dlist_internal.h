@@ -22,6 +22,7 @@ struct PrimBlock final : DlistObject {
   GLenum mode = GL_POINTS;
   bool arrays = false;  // DrawArrays/DrawElements: no Begin/End, current values untouched
   bool has_end = false; // Begin/End block closed by its End within the list
+  bool rect = false;    // from glRect: an error, not a Begin, between Begin and End (§2.10)
   std::vector<InputVertex> verts;
   std::vector<uint32_t> indices; // array draws with indices into verts; empty: in order
   uint32_t inherit_count[kListAttribCount] = {};
@@ -57,6 +58,10 @@ void compile_attrib(Context* ctx, uint32_t bit, const float* values);
 void compile_vertex(Context* ctx, float x, float y, float z, float w);
 void compile_begin(Context* ctx, GLenum mode);
 void compile_end(Context* ctx);
+// The open block is a Rect (compiled as its Begin, vertices and End, §2.10).
+inline void mark_rect_block(Context* ctx) {
+  static_cast<PrimBlock*>(ctx->dlist.block.get())->rect = true;
+}
 // Appends a compiled array draw; attributes of disabled arrays inherit what the list knows.
 void compile_array_block(Context* ctx, GLenum mode, std::vector<InputVertex>&& verts,
                          std::vector<uint32_t>&& indices);

@@ -93,6 +93,7 @@ template <typename T> void rect(T x1, T y1, T x2, T y2) {
       compile_vertex(ctx, r.x2, r.y1, 0.0f, 1.0f);
       compile_vertex(ctx, r.x2, r.y2, 0.0f, 1.0f);
       compile_vertex(ctx, r.x1, r.y2, 0.0f, 1.0f);
+      mark_rect_block(ctx);
       compile_end(ctx);
     }
   }

@@ -433,11 +433,22 @@ TEST_F(Glx, ShareLists) {
   glGenBuffers(1, &name);
   glBindBuffer(GL_ARRAY_BUFFER, name);
   ASSERT_TRUE(glIsBuffer(name));
-  // §3.3.7: a context created with a share list sees the group's objects; others do not.
+  const GLuint list = glGenLists(1);
+  glNewList(list, GL_COMPILE);
+  glTranslatef(3, 0, 0);
+  glEndList();
+  // §3.3.7: a context created with a share list sees the group's objects (buffer objects
+  // and display lists); others do not.
   ASSERT_TRUE(glXMakeContextCurrent(dpy, pb, pb, b));
   EXPECT_TRUE(glIsBuffer(name));
+  EXPECT_TRUE(glIsList(list));
+  glCallList(list);
+  GLfloat m[16] = {};
+  glGetFloatv(GL_MODELVIEW_MATRIX, m);
+  EXPECT_EQ(m[12], 3.0f);
   ASSERT_TRUE(glXMakeContextCurrent(dpy, pb, pb, alone));
   EXPECT_FALSE(glIsBuffer(name));
+  EXPECT_FALSE(glIsList(list));
   // The group outlives the context that created it.
   glXMakeContextCurrent(dpy, None, None, nullptr);
   glXDestroyContext(dpy, a);
