@@ -91,7 +91,9 @@ void validate_state(Context* ctx) {
     // §2.14.1: back colours are computed and selected only with two-sided lighting on.
     rs.two_sided = ls.enabled && ls.two_side;
   }
-  if (dirty & (kDirtyRasterMode | kDirtyFramebuffer)) derive_raster_modes(ctx, rs.modes); // raster_modes.cpp
+  // Points, lines, polygon stipple and offset (raster_modes.cpp); the offset's depth step
+  // depends on the framebuffer's depth bits.
+  if (dirty & (kDirtyRasterMode | kDirtyFramebuffer)) derive_raster_modes(ctx, rs.modes);
   // Only the primary colour is read by the fragment stage until texturing and fog exist
   // (transform.cpp folds the colour sum of §3.9 into it).
   rs.attr_count = 4;
