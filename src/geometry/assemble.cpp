@@ -63,6 +63,7 @@ public:
     init_face_state(face_, rs);
     init_clip_setup(clip_, rs);
     fill_fast_ = rs.polygon_mode[0] == GL_FILL && rs.polygon_mode[1] == GL_FILL && !rs.two_sided;
+    outlined_ = rs.polygon_mode[0] != GL_FILL || rs.polygon_mode[1] != GL_FILL;
   }
 
   template <class Fetch> void run(GLenum mode, const Fetch& f, size_t count);
@@ -122,7 +123,7 @@ private:
     if (stipple_counter_ != nullptr) *stipple_counter_ = 0.0f;
   }
   void reset_stipple_outline() {
-    if (!fill_fast_) reset_stipple();
+    if (outlined_) reset_stipple();
   }
 
   Sink& sink_;
@@ -132,6 +133,8 @@ private:
   // Both faces FILL and one-sided colours: an unclipped triangle needs no edge flags, no
   // colour swap and no fan, only the rasterizer call.
   bool fill_fast_ = true;
+  // Some face is drawn in LINE or POINT mode (GL 2.1 §3.5.4).
+  bool outlined_ = false;
 };
 
 template <class Sink>
@@ -229,7 +232,7 @@ void Assembler<Sink>::run(GLenum mode, const Fetch& f, size_t count) {
       const PVertex& q1 = f(i + 1);
       const PVertex& q2 = f(i + 2);
       const PVertex& q3 = f(i + 3);
-      if (fill_fast_) {
+      if (!outlined_) {
         triangle(q0, q1, q2, flag_bit(q0, kEdgeAB) | flag_bit(q1, kEdgeBC), q3);
         triangle(q0, q2, q3, flag_bit(q2, kEdgeBC) | flag_bit(q3, kEdgeCA), q3);
       } else {

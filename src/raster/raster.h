@@ -115,7 +115,7 @@ struct DrawCall {
   // null (tests calling the rasterizers directly) each primitive makes its own.
   const FragCtx* frag = nullptr;
   // The line stipple counter (GL 2.1 §3.4.2), owned by draw_primitives: primitive assembly
-  // resets it for each independent segment and at the start of a strip or loop, the line
+  // resets it for each independent segment, strip, loop and outlined polygon, the line
   // rasterizer advances it. Null: every segment starts at 0.
   float* stipple_counter = nullptr;
   // With RasterState::count_samples, draw_primitives adds the samples that passed here.

@@ -202,8 +202,8 @@ void derive_raster_modes(const Context* ctx, RasterModes& m) {
   // it per vertex from the unclamped size.
   m.point_size = ctx->point_size;
   if (!m.point_attenuated)
-    m.point_size = std::min(
-        std::max(std::min(ctx->point_size, s.point_size_max), s.point_size_min), kMaxPointSize);
+    m.point_size = std::min(std::max(std::min(ctx->point_size, s.point_size_max), s.point_size_min),
+                            kMaxPointSize);
   m.point_size_min = s.point_size_min;
   m.point_size_max = std::min(s.point_size_max, kMaxPointSize);
   m.point_fade_threshold = s.point_fade_threshold;

@@ -100,7 +100,8 @@ void validate_state(Context* ctx) {
   }
   // An active occlusion query makes the fragment stage count (GL 2.1 §4.1.7, query.cpp).
   if (dirty & kDirtyRenderMode) rs.count_samples = ctx->queries.active != 0;
-  // Wide, stippled and smooth lines and points, polygon stipple and offset (raster_modes.cpp).
+  // Points, lines, polygon stipple and offset (raster_modes.cpp); the offset's depth step
+  // depends on the framebuffer's depth bits.
   if (dirty & (kDirtyRasterMode | kDirtyFramebuffer)) derive_raster_modes(ctx, rs.modes);
   // Texturing and fog: per-vertex and per-fragment setups, live attribute count.
   validate_texpipe(ctx, dirty);

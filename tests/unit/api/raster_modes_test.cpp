@@ -4,6 +4,7 @@
 // their attenuation, stipple counters, wide lines, polygon stipple and offset.
 #include <cmath>
 #include <functional>
+#include <string>
 #include <vector>
 
 #include "api_fixture.h"
@@ -396,6 +397,62 @@ TEST_F(RasterModes, LineStippleCounters) {
       EXPECT_EQ((pixel(x, 8) & 0xffffff) != 0, bit(x)) << "strip factor " << factor << " x " << x;
     }
   }
+}
+
+// Where strip vertices and outline corners are not at pixel centres the counter follows
+// llvmpipe, not a count of fragments: the rows below are what llvmpipe (Mesa 22.3) draws.
+TEST_F(RasterModes, LineStippleMatchesLlvmpipe) {
+  const auto row = [&](int y) {
+    std::string r;
+    for (int x = 0; x < kW; ++x)
+      r += (pixel(x, y) & 0xffffff) != 0 ? '#' : '.';
+    return r;
+  };
+  const auto strip = [] {
+    glBegin(GL_LINE_STRIP);
+    glVertex2f(0.5f, 10.5f);
+    glVertex2f(7.2f, 10.5f);
+    glVertex2f(19.7f, 10.5f);
+    glVertex2f(31.5f, 10.5f);
+    glEnd();
+  };
+  pixel_setup();
+  glEnable(GL_LINE_STIPPLE);
+  glLineStipple(1, 0x0f0f);
+  strip();
+  EXPECT_EQ(row(10), "####....####....###....####.....");
+  pixel_setup();
+  glLineStipple(2, 0x0f0f);
+  strip();
+  EXPECT_EQ(row(10), "########........#######.........");
+  // LINE-mode outlines restart the pattern with each triangle and each quad; a triangle's
+  // outline starts with its closing edge, a quad's with its last edge.
+  glLineStipple(1, 0x0f0f);
+  glPolygonMode(GL_FRONT_AND_BACK, GL_LINE);
+  pixel_setup();
+  glBegin(GL_TRIANGLES);
+  glVertex2f(1.5f, 2.5f);
+  glVertex2f(14.5f, 2.5f);
+  glVertex2f(14.5f, 15.5f);
+  glVertex2f(16.5f, 2.5f);
+  glVertex2f(30.5f, 2.5f);
+  glVertex2f(30.5f, 16.5f);
+  glEnd();
+  EXPECT_EQ(row(2), "....####....###...####....####..");
+  pixel_setup();
+  glBegin(GL_QUADS);
+  glVertex2f(1.5f, 2.5f);
+  glVertex2f(14.5f, 2.5f);
+  glVertex2f(14.5f, 15.5f);
+  glVertex2f(1.5f, 15.5f);
+  glVertex2f(16.5f, 2.5f);
+  glVertex2f(30.5f, 2.5f);
+  glVertex2f(30.5f, 16.5f);
+  glVertex2f(16.5f, 16.5f);
+  glEnd();
+  EXPECT_EQ(row(2), "....####....###...####....####..");
+  glPolygonMode(GL_FRONT_AND_BACK, GL_FILL);
+  glDisable(GL_LINE_STIPPLE);
 }
 
 // Wide lines: an x-major line gets a vertical run of w pixels per column, centred on the line.
