@@ -380,7 +380,7 @@ void generate_mipmaps(TextureObject& tex, int face, int dims) {
   if (base < 0 || base >= kMaxTexLevels) return;
   if (tex.images[face][base].width == 0) return;
   const int max_levels = dims == 3 ? kMax3DTexLevels : kMaxTexLevels;
-  for (int level = base + 1; level < max_levels && level <= tex.params.max_level; ++level) {
+  for (int level = base + 1; level < max_levels; ++level) {
     const TexImage& src = tex.images[face][level - 1];
     const int b = src.border, bj = dims >= 2 ? b : 0, bk = dims >= 3 ? b : 0;
     const int sw = src.width - 2 * b, sh = src.height - 2 * bj, sd = src.depth - 2 * bk;

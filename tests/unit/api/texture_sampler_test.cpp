@@ -253,7 +253,8 @@ TEST(TextureSampler, EveryFilterAndWrapAgainstReference) {
   }
 }
 
-// llvmpipe's 8-bit linear step: v0 + floor((v1 - v0) * w / 256), coordinates in 1/256 texel.
+// llvmpipe's 8-bit linear step: v0 + floor(((v1 - v0) * w + 128) / 256), coordinates in 1/256
+// texel.
 TEST(TextureSampler, FixedPointLinearMatchesLlvmpipe) {
   TextureObject tex;
   tex.target = GL_TEXTURE_2D;
@@ -265,14 +266,14 @@ TEST(TextureSampler, FixedPointLinearMatchesLlvmpipe) {
   ASSERT_TRUE(pineda::make_sampler_view(tex, v));
   // s = 0.5: u = 0.5 * 2 * 256 - 128 = 128 -> texels 0 and 1, weight 128/256.
   RGBA c = sample1(v, 0.5f, 0.5f, 0, 0);
-  EXPECT_EQ(std::lround(c[0] * 255), 127); // 0 + (255 * 128 >> 8)
-  EXPECT_EQ(std::lround(c[1] * 255), 127); // 255 + floor(-255 * 128 / 256) = 255 - 128
+  EXPECT_EQ(std::lround(c[0] * 255), 128); // 0 + ((255 * 128 + 128) >> 8)
+  EXPECT_EQ(std::lround(c[1] * 255), 128); // 255 + ((-255 * 128 + 128) >> 8) = 255 - 127
   EXPECT_EQ(std::lround(c[2] * 255), 15);
-  EXPECT_EQ(std::lround(c[3] * 255), 150);
+  EXPECT_EQ(std::lround(c[3] * 255), 150); // 200 + floor(-49.5)
   // s = 0.3: u = round(153.6) - 128 = 26 -> weight 26/256.
   c = sample1(v, 0.3f, 0.5f, 0, 0);
-  EXPECT_EQ(std::lround(c[0] * 255), (255 * 26) >> 8);
-  EXPECT_EQ(std::lround(c[1] * 255), 255 + ((-255 * 26) >> 8));
+  EXPECT_EQ(std::lround(c[0] * 255), (255 * 26 + 128) >> 8);
+  EXPECT_EQ(std::lround(c[1] * 255), 255 + ((-255 * 26 + 128) >> 8));
 }
 
 // NEAREST_MIPMAP_*: level base + round-half-up(lod); LINEAR_MIPMAP: floor and fraction;
@@ -322,7 +323,7 @@ TEST(TextureSampler, MipmapLevelChoice) {
   ASSERT_TRUE(pineda::make_sampler_view(tex, v));
   // lod 1.25: 0.75 * level 1 + 0.25 * level 2 with a truncated 8-bit weight (64/256).
   const double r = sample1(v, 0.3f, 0.3f, 0, 1.25f)[0] * 255.0;
-  EXPECT_EQ(std::lround(r), 60 + ((60 * 64) >> 8));
+  EXPECT_EQ(std::lround(r), 60 + ((60 * 64 + 128) >> 8));
 }
 
 // GL 2.1 §3.8.9: lambda <= 0 magnifies (c = 0 always, as llvmpipe).
@@ -337,7 +338,7 @@ TEST(TextureSampler, MagnificationSwitchOver) {
   tex.params.wrap_s = GL_CLAMP_TO_EDGE;
   SamplerView v;
   ASSERT_TRUE(pineda::make_sampler_view(tex, v));
-  EXPECT_NEAR(sample1(v, 0.5f, 0.5f, 0, 0.0f)[0], 127 / 255.0, 1e-6); // LINEAR, level 0
+  EXPECT_NEAR(sample1(v, 0.5f, 0.5f, 0, 0.0f)[0], 128 / 255.0, 1e-6); // LINEAR, level 0
   EXPECT_NEAR(sample1(v, 0.4f, 0.5f, 0, 0.25f)[0], 0.0, 1e-6);        // NEAREST, level 0
   EXPECT_NEAR(sample1(v, 0.4f, 0.5f, 0, 0.75f)[0], 9 / 255.0, 1e-6);  // NEAREST, level 1
 }
