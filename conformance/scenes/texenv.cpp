@@ -50,8 +50,8 @@ GLuint checker_texture() {
   });
 }
 
-GLuint gradient_texture() {
-  return make_texture(32, 32, GL_LINEAR, [](float s, float t, float* c) {
+GLuint gradient_texture(GLenum filter = GL_LINEAR) {
+  return make_texture(32, 32, filter, [](float s, float t, float* c) {
     c[0] = s;
     c[1] = t;
     c[2] = 1.0f - 0.5f * (s + t);
@@ -109,7 +109,8 @@ void reset_units(const Gl13& gl) {
   glDisable(GL_LIGHTING);
 }
 
-// A quad with unit 0..n-1 coordinates (s0,t0)-(s1,t1) scaled per unit, smooth colours.
+// A quad with unit 0..n-1 coordinates scaled per unit, smooth colours. The small offsets keep
+// texel boundaries of NEAREST textures off pixel centres (no ties for rounding to decide).
 void multi_quad(const Gl13& gl, int units, float x0, float y0, float x1, float y1) {
   const float xs[4] = {x0, x1, x1, x0}, ys[4] = {y0, y0, y1, y1};
   const float ss[4] = {0, 1, 1, 0}, ts[4] = {0, 0, 1, 1};
@@ -117,7 +118,8 @@ void multi_quad(const Gl13& gl, int units, float x0, float y0, float x1, float y
   for (int v = 0; v < 4; ++v) {
     palette_color(v * 3 + 1, 0.25f + 0.25f * v);
     for (int u = 0; u < units; ++u)
-      gl.coord2(GL_TEXTURE0 + u, ss[v] * (1.0f + u) + 0.1f * u, ts[v] * (1.0f + 0.5f * u));
+      gl.coord2(GL_TEXTURE0 + u, ss[v] * (1.0f + u) + 0.1f * u + 0.0137f,
+                ts[v] * (1.0f + 0.5f * u) + 0.0113f);
     glVertex2f(xs[v], ys[v]);
   }
   glEnd();
@@ -193,7 +195,8 @@ PINEDA_SCENE(texenv_multitexture, "Two and four units: MODULATE x MODULATE, MODU
 PINEDA_SCENE(texenv_combine, "COMBINE: REPLACE, MODULATE, ADD, ADD_SIGNED, INTERPOLATE, SUBTRACT with sources and operands") {
   const Gl13 gl;
   clear_frame(0.0f, 0.0f, 0.0f);
-  const GLuint t0 = gradient_texture(), t1 = checker_texture();
+  // NEAREST: RGB_SCALE and ALPHA_SCALE amplify the 8-bit rounding of llvmpipe's LINEAR filter.
+  const GLuint t0 = gradient_texture(GL_NEAREST), t1 = checker_texture();
   const GLfloat env[4] = {0.25f, 0.625f, 0.875f, 0.375f};
   const GLenum funcs[6] = {GL_REPLACE, GL_MODULATE, GL_ADD, GL_ADD_SIGNED, GL_INTERPOLATE,
                            GL_SUBTRACT};
