@@ -167,7 +167,8 @@ void sphere(float r, int slices, int stacks) {
 
 } // namespace
 
-PINEDA_SCENE(texenv_multitexture, "Two and four units: MODULATE x MODULATE, MODULATE + ADD, DECAL over REPLACE") {
+PINEDA_SCENE(texenv_multitexture,
+             "Two and four units: MODULATE x MODULATE, MODULATE + ADD, DECAL over REPLACE") {
   const Gl13 gl;
   clear_frame(0.125f, 0.125f, 0.125f);
   const GLuint t0 = checker_texture(), t1 = gradient_texture(), t2 = normal_texture();
@@ -192,14 +193,15 @@ PINEDA_SCENE(texenv_multitexture, "Two and four units: MODULATE x MODULATE, MODU
   glDeleteTextures(3, all);
 }
 
-PINEDA_SCENE(texenv_combine, "COMBINE: REPLACE, MODULATE, ADD, ADD_SIGNED, INTERPOLATE, SUBTRACT with sources and operands") {
+PINEDA_SCENE(texenv_combine, "COMBINE: REPLACE, MODULATE, ADD, ADD_SIGNED, INTERPOLATE, SUBTRACT "
+                             "with sources and operands") {
   const Gl13 gl;
   clear_frame(0.0f, 0.0f, 0.0f);
   // NEAREST: RGB_SCALE and ALPHA_SCALE amplify the 8-bit rounding of llvmpipe's LINEAR filter.
   const GLuint t0 = gradient_texture(GL_NEAREST), t1 = checker_texture();
   const GLfloat env[4] = {0.25f, 0.625f, 0.875f, 0.375f};
-  const GLenum funcs[6] = {GL_REPLACE, GL_MODULATE, GL_ADD, GL_ADD_SIGNED, GL_INTERPOLATE,
-                           GL_SUBTRACT};
+  const GLenum funcs[6] = {GL_REPLACE,    GL_MODULATE,    GL_ADD,
+                           GL_ADD_SIGNED, GL_INTERPOLATE, GL_SUBTRACT};
   const GLenum ops[4] = {GL_SRC_COLOR, GL_ONE_MINUS_SRC_COLOR, GL_SRC_ALPHA,
                          GL_ONE_MINUS_SRC_ALPHA};
   const GLenum srcs[4] = {GL_TEXTURE, GL_PRIMARY_COLOR, GL_CONSTANT, GL_PREVIOUS};
@@ -226,7 +228,8 @@ PINEDA_SCENE(texenv_combine, "COMBINE: REPLACE, MODULATE, ADD, ADD_SIGNED, INTER
   glDeleteTextures(2, all);
 }
 
-PINEDA_SCENE(texenv_dot3, "DOT3_RGB and DOT3_RGBA bump lighting with a normal map and the crossbar") {
+PINEDA_SCENE(texenv_dot3,
+             "DOT3_RGB and DOT3_RGBA bump lighting with a normal map and the crossbar") {
   const Gl13 gl;
   clear_frame(0.0f, 0.0f, 0.0f);
   const GLuint normals = normal_texture(), base = checker_texture();
@@ -263,7 +266,8 @@ PINEDA_SCENE(texenv_dot3, "DOT3_RGB and DOT3_RGBA bump lighting with a normal ma
   glDeleteTextures(2, all);
 }
 
-PINEDA_SCENE(texgen_linear, "OBJECT_LINEAR and EYE_LINEAR texture generation on rotating geometry") {
+PINEDA_SCENE(texgen_linear,
+             "OBJECT_LINEAR and EYE_LINEAR texture generation on rotating geometry") {
   const Gl13 gl;
   clear_frame(0.0f, 0.0f, 0.125f);
   perspective(frame);
@@ -291,7 +295,8 @@ PINEDA_SCENE(texgen_linear, "OBJECT_LINEAR and EYE_LINEAR texture generation on 
   reset_units(gl);
 }
 
-PINEDA_SCENE(texgen_sphere_map, "SPHERE_MAP environment mapping on a sphere and a torus-like ring") {
+PINEDA_SCENE(texgen_sphere_map,
+             "SPHERE_MAP environment mapping on a sphere and a torus-like ring") {
   const Gl13 gl;
   clear_frame(0.0f, 0.0f, 0.0f);
   perspective(frame);
@@ -344,7 +349,8 @@ PINEDA_SCENE(texgen_cube_map, "Cube map with REFLECTION_MAP and NORMAL_MAP coord
   glTexEnvi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_REPLACE);
   for (int k = 0; k < 2; ++k) {
     const GLenum mode = k == 0 ? GL_REFLECTION_MAP : GL_NORMAL_MAP;
-    for (GLenum c : {GL_S, GL_T, GL_R}) glTexGeni(c, GL_TEXTURE_GEN_MODE, mode);
+    for (GLenum c : {GL_S, GL_T, GL_R})
+      glTexGeni(c, GL_TEXTURE_GEN_MODE, mode);
     glEnable(GL_TEXTURE_GEN_S);
     glEnable(GL_TEXTURE_GEN_T);
     glEnable(GL_TEXTURE_GEN_R);
