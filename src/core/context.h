@@ -19,6 +19,7 @@
 #include "pixel/transfer.h"
 #include "raster/raster.h"
 #include "state/lighting_state.h"
+#include "state/texpipe_state.h"
 #include "texture/texture_object.h"
 
 namespace pineda {
@@ -66,6 +67,7 @@ struct VertexArrays {
   ClientArray texcoord[kMaxTexUnits];
   ClientArray edgeflag{false, 1, GL_BOOL, 0, nullptr, 0};
   ClientArray secondary{false, 3, GL_FLOAT, 0, nullptr, 0}; // SECONDARY_COLOR_ARRAY
+  ClientArray fog{false, 1, GL_FLOAT, 0, nullptr, 0};       // FOG_COORD_ARRAY (GL 1.4)
 };
 
 // A buffer object (GL 2.1 §2.9).
@@ -106,8 +108,9 @@ struct InputVertex {
   float pos[4];
   float color[4];
   float normal[3];
-  float tex[4]; // texture unit 0; more units come with multitexture
+  float tex[kMaxTexUnits][4]; // per texture unit
   float color2[3]; // secondary colour (GL 1.4, §2.7)
+  float fog;       // fog coordinate (GL 1.4, §2.7)
   uint32_t edge;
 };
 
@@ -190,6 +193,7 @@ struct AttribFrame {
   bool color_sum = false; // fog: the COLOR_SUM enable (Table 6.11)
   GLenum read_buffer = GL_FRONT; // pixel (Table 6.27)
   TextureAttrib texture_objects{}; // texture: bindings, object parameters (texture_object.cpp)
+  TexPipeAttrib texpipe; // texture environment/generation/enables, fog (src/state/texenv.cpp)
 };
 
 struct Context {
@@ -246,6 +250,9 @@ struct Context {
 
   // ---- lighting (GL 2.1 §2.14.1-§2.14.4), src/state/lighting.cpp ----
   LightingState lighting;
+
+  // ---- texture units and fog (GL 2.1 §2.11.4, §3.8.13, §3.10), src/state/texenv.cpp ----
+  TexPipeState texpipe;
 
   // ---- rasterization (Table 6.11, 6.12) ----
   bool cull_enabled = false;

@@ -12,6 +12,7 @@
 // chosen only when one of them is on, with a per-row branch for each.
 #include "fragment/fragment_ops.h"
 
+#include "fragment/shade.h"
 #include "fragment/simd.h"
 
 #include <algorithm>
@@ -77,6 +78,15 @@ inline i32x4 to_unorm8(f32x4 v) {
   v = v > zero ? v : zero;
   v = v < one ? v : one;
   return __builtin_convertvector(v * 255.0f + 0.5f, i32x4);
+}
+
+// One block row of the colours shade_block computed (ShadePath::PerFragment).
+template <ColorFormat P> void per_fragment_row(const float (*sc)[64], int j, Row& out) {
+  for (int h = 0; h < 2; ++h) {
+    f32x4 ch[4];
+    for (int c = 0; c < 4; ++c) std::memcpy(&ch[c], &sc[c][8 * j + 4 * h], sizeof(f32x4));
+    out.v[h] = pack4<P>(to_unorm8(ch[0]), to_unorm8(ch[1]), to_unorm8(ch[2]), to_unorm8(ch[3]));
+  }
 }
 
 // Perspective-correct colour of one block row (GL 2.1 §3.5.1 eq 3.9): c = (c/w) / (1/w).
@@ -388,6 +398,12 @@ void block_loop(const FragCtx& ctx, const FragInputs& in, int bx, int by, uint64
                                       in.const_color[3]);
     const_row.v[0] = const_row.v[1] = u32x4{} + px;
   }
+  // Texturing and fog: the whole block's colours first (fragment/shade.cpp).
+  [[maybe_unused]] alignas(16) float shaded_block[4][64];
+  if constexpr (S == ShadePath::PerFragment) {
+    std::memset(shaded_block, 0, sizeof(shaded_block));
+    shade_block(ctx, in, bx, by, mask, shaded_block);
+  }
   while (mask != 0) {
     const int j = std::countr_zero(mask) >> 3;
     unsigned m = static_cast<unsigned>(mask >> (8 * j)) & 0xffu;
@@ -400,6 +416,8 @@ void block_loop(const FragCtx& ctx, const FragInputs& in, int bx, int by, uint64
       if (ctx.key.alpha_test) {
         if constexpr (S == ShadePath::Const)
           s = const_row;
+        else if constexpr (S == ShadePath::PerFragment)
+          per_fragment_row<P>(shaded_block, j, s);
         else
           shade_row<P>(in, di, dj, s);
         shaded = true;
@@ -423,6 +441,8 @@ void block_loop(const FragCtx& ctx, const FragInputs& in, int bx, int by, uint64
       if (!shaded) {
         if constexpr (S == ShadePath::Const)
           s = const_row;
+        else if constexpr (S == ShadePath::PerFragment)
+          per_fragment_row<P>(shaded_block, j, s);
         else
           shade_row<P>(in, di, dj, s);
       }
@@ -478,10 +498,14 @@ constexpr std::array<BlockFn, 2 * kShadePathCount> kExtDepthOnlyTable = {
                 ShadePath::Const, true>,
     &block_loop<DepthPath::Off, ColorFormat::RGBA8, ColorPath::None, BlendPath::Off,
                 ShadePath::Smooth, true>,
+    &block_loop<DepthPath::Off, ColorFormat::RGBA8, ColorPath::None, BlendPath::Off,
+                ShadePath::PerFragment, true>,
     &block_loop<DepthPath::Generic, ColorFormat::RGBA8, ColorPath::None, BlendPath::Off,
                 ShadePath::Const, true>,
     &block_loop<DepthPath::Generic, ColorFormat::RGBA8, ColorPath::None, BlendPath::Off,
                 ShadePath::Smooth, true>,
+    &block_loop<DepthPath::Generic, ColorFormat::RGBA8, ColorPath::None, BlendPath::Off,
+                ShadePath::PerFragment, true>,
 };
 
 // Depth-only instances (colour mask all false or no colour buffer); the other template
@@ -537,7 +561,8 @@ BlockFn select_block_fn(const StateKey& key, ShadePath shade) {
   if (key.ext()) {
     const DepthPath d = key.depth_test ? DepthPath::Generic : DepthPath::Off;
     if (c == ColorPath::None)
-      return kExtDepthOnlyTable[(d == DepthPath::Generic ? 2 : 0) + static_cast<int>(shade)];
+      return kExtDepthOnlyTable[(d == DepthPath::Generic ? kShadePathCount : 0) +
+                                static_cast<int>(shade)];
     return kExtColorTable[color_index(d, key.format, c, key.blend_path(), shade)];
   }
   if (c == ColorPath::None) return kDepthOnlyTable[static_cast<int>(key.depth_path())];
@@ -578,6 +603,7 @@ void prepare_fragments(const RasterState& rs, const Framebuffer& fb, FragCtx& ct
     ctx.clip_y1 = static_cast<int>(std::min<int64_t>(ctx.clip_y1, y1));
   }
   ctx.needs_color = k.color_path() != ColorPath::None || k.alpha_test;
+  ctx.shade = ctx.needs_color ? rs.shade : nullptr;
   ctx.needs_depth = k.depth_test;
   ctx.noop = (!ctx.needs_color && !ctx.needs_depth && !k.stencil_test) ||
              ctx.clip_x0 > ctx.clip_x1 || ctx.clip_y0 > ctx.clip_y1;

@@ -30,6 +30,9 @@ struct PlaneD {
   double v0 = 0, dx = 0, dy = 0;
 };
 
+struct ShadeInputs; // fragment/shade.h
+struct ShadeSetup;  // fragment/shade.h
+
 // Interpolation inputs of one primitive.
 struct FragInputs {
   int ox = 0, oy = 0;
@@ -41,6 +44,7 @@ struct FragInputs {
   PlaneF inv_w;
   PlaneF color_w[4];
   uint8_t const_color[4] = {0, 0, 0, 0}; // RGBA for ShadePath::Const
+  const ShadeInputs* shade = nullptr;     // planes for ShadePath::PerFragment
 };
 
 struct FragCtx;
@@ -78,7 +82,10 @@ struct FragCtx {
   bool noop = true;          // nothing can change: no colour, depth or stencil update
   bool needs_color = false;  // the colour path or the alpha test reads the primitive's colour
   bool needs_depth = false;  // the depth path reads the primitive's z
-  BlockFn fn[kShadePathCount] = {nullptr, nullptr}; // indexed by ShadePath
+  BlockFn fn[kShadePathCount] = {}; // indexed by ShadePath
+  // Texturing, colour sum and fog per fragment (fragment/shade.h); set when the draw has
+  // texturing or fog on and reads colour. Primitives then run ShadePath::PerFragment.
+  const ShadeSetup* shade = nullptr;
 };
 
 // Fills ctx for one draw: the key, the surfaces and the selected block loops.

@@ -29,10 +29,11 @@ enum class BlendPath : uint8_t { Off, Over, Generic };
 constexpr int kBlendPathCount = 3;
 
 // Where a primitive's colour comes from: one value for the whole primitive (flat shading,
-// points, or three equal vertex colours) or perspective-correct interpolation. This one is
-// chosen per primitive, not per draw.
-enum class ShadePath : uint8_t { Const, Smooth };
-constexpr int kShadePathCount = 2;
+// points, or three equal vertex colours), perspective-correct interpolation, or per-fragment
+// shading (texturing, colour sum and fog, fragment/shade.h) while texturing or fog is on.
+// Chosen per primitive, not per draw.
+enum class ShadePath : uint8_t { Const, Smooth, PerFragment };
+constexpr int kShadePathCount = 3;
 
 constexpr int kColorFormatCount = 4;
 

@@ -123,13 +123,26 @@ const uint8_t* array_base(Context* ctx, const ClientArray& a, size_t max_element
   return data.data() + offset;
 }
 
+// Every client array in a fixed order: vertex, colour, normal, edge flag, secondary colour,
+// fog coordinate, then the texture coordinate array of each unit.
+constexpr int kArrayCount = 6 + kMaxTexUnits;
+inline void all_arrays(const VertexArrays& arr, const ClientArray* (&out)[kArrayCount]) {
+  out[0] = &arr.vertex;
+  out[1] = &arr.color;
+  out[2] = &arr.normal;
+  out[3] = &arr.edgeflag;
+  out[4] = &arr.secondary;
+  out[5] = &arr.fog;
+  for (int u = 0; u < kMaxTexUnits; ++u) out[6 + u] = &arr.texcoord[u];
+}
+
 template <typename Elements>
 bool fetch(Context* ctx, Elements el, size_t n, size_t max_element, InputVertex* out) {
   const VertexArrays& arr = ctx->arrays;
-  const ClientArray* arrays[6] = {&arr.vertex,   &arr.color,    &arr.normal,
-                                  &arr.texcoord[0], &arr.edgeflag, &arr.secondary};
-  const uint8_t* bases[6] = {};
-  for (int i = 0; i < 6; ++i) {
+  const ClientArray* arrays[kArrayCount];
+  all_arrays(arr, arrays);
+  const uint8_t* bases[kArrayCount] = {};
+  for (int i = 0; i < kArrayCount; ++i) {
     if (!arrays[i]->enabled) continue;
     bases[i] = array_base(ctx, *arrays[i], max_element);
     if (bases[i] == nullptr) return false;
@@ -143,11 +156,13 @@ bool fetch(Context* ctx, Elements el, size_t n, size_t max_element, InputVertex*
     def.color[i] = ctx->cur_color[i];
   for (int i = 0; i < 3; ++i)
     def.normal[i] = ctx->cur_normal[i];
-  for (int i = 0; i < 4; ++i)
-    def.tex[i] = arr.texcoord[0].enabled ? (i == 3 ? 1.0f : 0.0f) : ctx->cur_tex[0][i];
+  for (int u = 0; u < kMaxTexUnits; ++u)
+    for (int i = 0; i < 4; ++i)
+      def.tex[u][i] = arr.texcoord[u].enabled ? (i == 3 ? 1.0f : 0.0f) : ctx->cur_tex[u][i];
   if (arr.color.enabled && arr.color.size == 3) def.color[3] = 1.0f;
   for (int i = 0; i < 3; ++i)
     def.color2[i] = ctx->cur_color2[i];
+  def.fog = ctx->texpipe.cur_fog_coord;
   def.edge = ctx->cur_edge ? 1u : 0u;
   for (size_t k = 0; k < n; ++k)
     out[k] = def;
@@ -155,14 +170,17 @@ bool fetch(Context* ctx, Elements el, size_t n, size_t max_element, InputVertex*
   if (bases[0]) convert_any(arr.vertex, bases[0], false, el, n, out, offsetof(InputVertex, pos));
   if (bases[1]) convert_any(arr.color, bases[1], true, el, n, out, offsetof(InputVertex, color));
   if (bases[2]) convert_any(arr.normal, bases[2], true, el, n, out, offsetof(InputVertex, normal));
-  if (bases[3])
-    convert_any(arr.texcoord[0], bases[3], false, el, n, out, offsetof(InputVertex, tex));
-  if (bases[5])
-    convert_any(arr.secondary, bases[5], true, el, n, out, offsetof(InputVertex, color2));
-  if (bases[4]) {
+  if (bases[4])
+    convert_any(arr.secondary, bases[4], true, el, n, out, offsetof(InputVertex, color2));
+  if (bases[5]) convert_any(arr.fog, bases[5], false, el, n, out, offsetof(InputVertex, fog));
+  for (int u = 0; u < kMaxTexUnits; ++u)
+    if (bases[6 + u])
+      convert_any(arr.texcoord[u], bases[6 + u], false, el, n, out,
+                  offsetof(InputVertex, tex) + sizeof(float[4]) * static_cast<size_t>(u));
+  if (bases[3]) {
     const size_t stride = array_stride(arr.edgeflag);
     for (size_t k = 0; k < n; ++k)
-      out[k].edge = bases[4][el[k] * stride] != 0 ? 1u : 0u;
+      out[k].edge = bases[3][el[k] * stride] != 0 ? 1u : 0u;
   }
   return true;
 }
@@ -170,9 +188,9 @@ bool fetch(Context* ctx, Elements el, size_t n, size_t max_element, InputVertex*
 } // namespace
 
 bool arrays_hold(Context* ctx, size_t max_element) {
-  const VertexArrays& arr = ctx->arrays;
-  for (const ClientArray* a :
-       {&arr.vertex, &arr.color, &arr.normal, &arr.texcoord[0], &arr.edgeflag, &arr.secondary})
+  const ClientArray* arrays[kArrayCount];
+  all_arrays(ctx->arrays, arrays);
+  for (const ClientArray* a : arrays)
     if (a->enabled && array_base(ctx, *a, max_element) == nullptr) return false;
   return true;
 }

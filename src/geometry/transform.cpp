@@ -1,10 +1,12 @@
 // Vertex transformation (GL 2.1 §2.11, §2.12, §2.14.6): object coordinates to clip
 // coordinates through the composite matrix, clip codes, window coordinates for vertices that
 // need no clipping, and the vertex colours: lit (§2.14.1, light_eval.cpp) or the clamped
-// current colours, with the colour sum (§3.9) folded in.
+// current colours, with the colour sum (§3.9) folded in unless texturing or fog is on; texture
+// and fog coordinates (texcoord.cpp).
 #include "geometry/clip.h"
 #include "geometry/geometry.h"
 #include "geometry/light_eval.h"
+#include "geometry/texcoord.h"
 #include "raster/raster.h"
 
 namespace pineda {
@@ -14,8 +16,8 @@ namespace {
 // GL 2.1 §3.9 colour sum, folded into the primary colour at the vertex: the fragment's colour
 // is clamp(c_pri + c_sec) with both colours interpolated, and interpolation (clipping, eq.
 // 3.9) is linear, so interpolating the unclamped per-vertex sum and clamping per fragment (as
-// the fragment stage does) gives the same value. The sum must move behind texturing once the
-// texture environment (§3.8.13, which precedes the colour sum) exists.
+// the fragment stage does) gives the same value. With texturing (§3.8.13 precedes the colour
+// sum) or fog on, the fragment stage adds it instead.
 inline void add_secondary(float* attr, bool back) {
   for (int c = 0; c < 3; ++c) attr[kAttrColor + c] += attr[kAttrColor2 + c];
   if (back)
@@ -53,6 +55,11 @@ void draw_vertices(Context* ctx, GLenum mode, const InputVertex* in, size_t n,
   // unless the specular term is separate; otherwise COLOR_SUM adds the current secondary
   // colour.
   const bool color_sum = lit ? lighting.setup.separate_specular : lighting.color_sum;
+  // With texturing or fog on, the fragment stage adds the secondary colour after the texture
+  // environments (fragment/shade.cpp); otherwise it is folded in here.
+  const bool fold_sum = color_sum && rs.shade == nullptr;
+  const TexVertexSetup& tvs = ctx->texpipe.vertex;
+  const bool tex_live = rs.shade != nullptr && (tvs.units != 0 || tvs.fog);
   const bool two_sided = rs.two_sided;
 
   for (size_t i = 0; i < n; ++i) {
@@ -67,7 +74,7 @@ void draw_vertices(Context* ctx, GLenum mode, const InputVertex* in, size_t n,
       while (next_change < change_count && changes[next_change].vertex <= i)
         material = changes[next_change++].material;
       light_vertex(lighting.setup, material, v.pos, v.normal, v.color, p.attr);
-      if (color_sum) add_secondary(p.attr, two_sided);
+      if (fold_sum) add_secondary(p.attr, two_sided);
     } else {
       // GL 2.1 §2.14.6: with lighting off the primary colour is the current colour, clamped.
       for (int c = 0; c < 4; ++c) {
@@ -79,9 +86,10 @@ void draw_vertices(Context* ctx, GLenum mode, const InputVertex* in, size_t n,
           const float col = v.color2[c];
           p.attr[kAttrColor2 + c] = col > 0.0f ? (col < 1.0f ? col : 1.0f) : 0.0f;
         }
-        add_secondary(p.attr, false);
+        if (fold_sum) add_secondary(p.attr, false);
       }
     }
+    if (tex_live) tex_vertex(tvs, v.pos, v.normal, v.tex, v.fog, p.attr);
     p.edgeflag = v.edge;
   }
 

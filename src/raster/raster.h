@@ -39,6 +39,8 @@ inline void to_window(PVertex& v, const Viewport& vp) {
   v.win[3] = inv_w;
 }
 
+struct ShadeSetup; // fragment/shade.h
+
 // Everything the back end needs, derived from GL state by the front end's validation step.
 // Plain data: no pointers into the context.
 struct RasterState {
@@ -89,6 +91,11 @@ struct RasterState {
   // GL 2.1 §4.1.10: with the colour logic operation on, blending is off whatever BLEND says.
   bool logic_op = false;
   GLenum logic_op_mode = GL_COPY;
+
+  // ---- texturing, colour sum and fog (src/fragment/shade.h, src/state/validate_texpipe.cpp) ----
+  // Set while texturing or fog is on: primitives are then shaded per fragment. Derived state
+  // owned by the context, valid while the draw runs.
+  const ShadeSetup* shade = nullptr;
 };
 
 struct FragCtx; // fragment/fragment_ops.h

@@ -27,6 +27,7 @@
 #include "fragment/fragment_ops.h"
 #include "raster/raster.h"
 #include "raster/setup.h"
+#include "raster/setup_shade.h"
 
 namespace pineda {
 
@@ -113,6 +114,12 @@ void line(const DrawCall& dc, const FragCtx& ctx, const PVertex& a, const PVerte
       for (int k = 0; k < 4; ++k) in.color_w[k] = line_plane_f(ca[k] * wa, cb[k] * wb);
       shade = ShadePath::Smooth;
     }
+  }
+  ShadeInputs si; // texturing and fog (fragment/shade.h)
+  if (ctx.shade != nullptr) {
+    setup_shade_line(*ctx.shade, a, b, provoking, dc.state->flat, t0, tdx, tdy, si);
+    in.shade = &si;
+    shade = ShadePath::PerFragment;
   }
   BlockBatch batch{ctx, in, ctx.fn[static_cast<int>(shade)]};
 

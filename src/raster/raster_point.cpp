@@ -5,6 +5,7 @@
 #include "fragment/fragment_ops.h"
 #include "raster/raster.h"
 #include "raster/setup.h"
+#include "raster/setup_shade.h"
 
 namespace pineda {
 
@@ -26,7 +27,14 @@ void point(const FragCtx& ctx, const PVertex& p) {
   const_color(p, kAttrColor, in.const_color);
   const int bx = x & ~(kBlockSize - 1), by = y & ~(kBlockSize - 1);
   const uint64_t bit = uint64_t{1} << (8 * (y - by) + (x - bx));
-  ctx.fn[static_cast<int>(ShadePath::Const)](ctx, in, bx, by, bit);
+  ShadeInputs si; // texturing and fog (fragment/shade.h)
+  ShadePath shade = ShadePath::Const;
+  if (ctx.shade != nullptr) {
+    setup_shade_point(*ctx.shade, p, si);
+    in.shade = &si;
+    shade = ShadePath::PerFragment;
+  }
+  ctx.fn[static_cast<int>(shade)](ctx, in, bx, by, bit);
 }
 
 } // namespace

@@ -10,6 +10,7 @@
 #include "fragment/simd.h"
 #include "raster/raster.h"
 #include "raster/setup.h"
+#include "raster/setup_shade.h"
 
 namespace pineda {
 
@@ -160,7 +161,13 @@ void triangle(const DrawCall& dc, const FragCtx& ctx, const PVertex& a, const PV
   const int slot = (rs.two_sided && back_facing) ? kAttrBackColor : kAttrColor;
   FragInputs in;
   const PlaneSetup ps = make_plane_setup(t);
-  const ShadePath shade = setup_triangle_inputs(ctx, ps, a, b, c, provoking, rs.flat, slot, in);
+  ShadePath shade = setup_triangle_inputs(ctx, ps, a, b, c, provoking, rs.flat, slot, in);
+  ShadeInputs si; // texturing and fog (fragment/shade.h)
+  if (ctx.shade != nullptr) {
+    setup_shade_triangle(*ctx.shade, ps, a, b, c, provoking, rs.flat, slot, si);
+    in.shade = &si;
+    shade = ShadePath::PerFragment;
+  }
   traverse(te, ctx, in, ctx.fn[static_cast<int>(shade)]);
 }
 

@@ -2,8 +2,6 @@
 // attribute stack. Each group is the state whose "attribute" column in the GL 2.1 state tables
 // names it, restricted to the state Pineda has. Groups accepted but saving nothing yet, and
 // what each must grow to cover as the state is implemented (§6.1.14, Table 6.2):
-//   FOG_BIT: fog enable, colour, density, start, end, mode, index and coordinate source
-//     (Table 6.11); today only the COLOR_SUM enable, whose attribute is fog/enable.
 //   LINE_BIT: line smooth and stipple enables, stipple pattern and repeat, line width
 //     (Table 6.14); the width is the constant 1 until glLineWidth exists.
 //   POINT_BIT: point smooth enable, size, size limits, fade threshold, distance attenuation,
@@ -11,9 +9,8 @@
 //   POLYGON_BIT also: polygon smooth and stipple enables, polygon offset factor, units and
 //     enables (Table 6.14). POLYGON_STIPPLE_BIT: the stipple pattern.
 //   PIXEL_MODE_BIT also: pixel transfer scales and biases, maps, zoom (Tables 6.23-6.27).
-//   TEXTURE_BIT: active texture unit, bindings, texture object parameters, environment and
-//     coordinate generation (Tables 6.16-6.19). ENABLE_BIT: the texture and
-//     coordinate-generation enables then join enable_flags() below.
+//   TEXTURE_BIT: bindings and texture object parameters (Tables 6.16-6.18); the environment,
+//     coordinate generation, enables and active unit are saved by texenv.cpp.
 //   LIST_BIT: the display-list base. EVAL_BIT: evaluator maps, grid and enables (Table 6.28).
 //   ACCUM_BUFFER_BIT: the accumulation clear value. MULTISAMPLE_BIT: multisample enables and
 //   sample coverage (Table 6.15). COLOR_BUFFER_BIT, CURRENT_BIT also: index clear value and
@@ -25,6 +22,11 @@
 #include <array>
 
 namespace pineda {
+
+// Texture units and fog (src/state/texenv.cpp): the parts of CURRENT_BIT, ENABLE_BIT,
+// TEXTURE_BIT and FOG_BIT that live in Context::texpipe; restore returns the dirty bits.
+void texpipe_save_attrib(const Context* c, GLbitfield mask, TexPipeAttrib& f);
+uint32_t texpipe_restore_attrib(Context* c, GLbitfield mask, const TexPipeAttrib& f);
 
 namespace {
 
@@ -138,6 +140,7 @@ void save(const Context* c, AttribFrame& f) {
   if (m & GL_FOG_BIT) f.color_sum = c->lighting.color_sum;
   if (m & GL_PIXEL_MODE_BIT) f.read_buffer = c->read_buffer;
   if (m & GL_TEXTURE_BIT) save_texture_attrib(c, f.texture_objects);
+  texpipe_save_attrib(c, m, f.texpipe);
 }
 
 // Restore the groups of `f` and return the derived state they invalidate.
@@ -261,6 +264,7 @@ uint32_t restore(Context* c, const AttribFrame& f) {
   }
   if (m & GL_PIXEL_MODE_BIT) c->read_buffer = f.read_buffer;
   if (m & GL_TEXTURE_BIT) restore_texture_attrib(c, f.texture_objects); // marks kDirtyTexture
+  dirty |= texpipe_restore_attrib(c, m, f.texpipe);
   // GL 2.1 §2.14.3: while COLOR_MATERIAL is enabled the tracked material properties follow
   // the current colour, whichever of the two was restored.
   if ((m & (GL_CURRENT_BIT | GL_LIGHTING_BIT | GL_ENABLE_BIT)) && c->lighting.color_material) {

@@ -29,8 +29,10 @@ inline void vertex(float x, float y, float z, float w) {
   v.pos[0] = x, v.pos[1] = y, v.pos[2] = z, v.pos[3] = w;
   for (int i = 0; i < 4; ++i) v.color[i] = ctx->cur_color[i];
   for (int i = 0; i < 3; ++i) v.normal[i] = ctx->cur_normal[i];
-  for (int i = 0; i < 4; ++i) v.tex[i] = ctx->cur_tex[0][i];
+  for (int u = 0; u < kMaxTexUnits; ++u)
+    for (int i = 0; i < 4; ++i) v.tex[u][i] = ctx->cur_tex[u][i];
   for (int i = 0; i < 3; ++i) v.color2[i] = ctx->cur_color2[i];
+  v.fog = ctx->texpipe.cur_fog_coord;
   v.edge = ctx->cur_edge ? 1u : 0u;
 }
 

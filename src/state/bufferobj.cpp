@@ -99,7 +99,7 @@ void GLAPIENTRY DeleteBuffers(GLsizei n, const GLuint* buffers) {
     if (ctx->element_array_buffer == name) ctx->element_array_buffer = 0;
     VertexArrays& a = ctx->arrays;
     for (ClientArray* arr : {&a.vertex, &a.color, &a.normal, &a.edgeflag, &a.texcoord[0],
-                             &a.texcoord[1], &a.texcoord[2], &a.texcoord[3]})
+                             &a.texcoord[1], &a.texcoord[2], &a.texcoord[3], &a.secondary, &a.fog})
       if (arr->buffer == name) arr->buffer = 0;
   }
 }

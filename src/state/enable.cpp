@@ -6,6 +6,8 @@
 
 namespace pineda {
 
+bool* texpipe_capability(Context* ctx, GLenum cap, uint32_t* dirty); // texenv.cpp
+
 namespace {
 
 // The boolean behind a server-side capability and what it invalidates; nullptr when the
@@ -41,7 +43,8 @@ bool* capability(Context* ctx, GLenum cap, uint32_t* dirty) {
   // GL 2.1 §2.11.3: normals are rescaled or normalized before lighting.
   case GL_NORMALIZE: *dirty = kDirtyLighting; return &ctx->normalize;
   case GL_RESCALE_NORMAL: *dirty = kDirtyLighting; return &ctx->rescale_normal;
-  default: return nullptr;
+  // Texture target and coordinate-generation enables, fog (src/state/texenv.cpp).
+  default: return texpipe_capability(ctx, cap, dirty);
   }
 }
 
@@ -53,6 +56,7 @@ ClientArray* client_array(Context* ctx, GLenum array) {
   case GL_TEXTURE_COORD_ARRAY: return &ctx->arrays.texcoord[ctx->client_active_texture];
   case GL_EDGE_FLAG_ARRAY: return &ctx->arrays.edgeflag;
   case GL_SECONDARY_COLOR_ARRAY: return &ctx->arrays.secondary;
+  case GL_FOG_COORD_ARRAY: return &ctx->arrays.fog;
   default: return nullptr;
   }
 }

@@ -10,6 +10,8 @@
 namespace pineda {
 
 bool query_enabled(Context* ctx, GLenum cap, bool* value); // enable.cpp
+// texenv.cpp: up to 16 values; kind 0 integer, 1 boolean, 2 float, 3 normalized.
+bool texpipe_get(Context* ctx, GLenum pname, int* kind, double* values, int* count);
 int texture_get_values(Context* ctx, GLenum pname, double* v, bool* is_float); // texture/
 // Pixel transfer, pixel map sizes, zoom and raster position (pixel.cpp): the number of values
 // written to v (0: not a pixel query) and their kind as the Kind enum's index.
@@ -58,6 +60,9 @@ const ClientArray* array_for(Context* ctx, GLenum pname) {
   case GL_SECONDARY_COLOR_ARRAY_TYPE:
   case GL_SECONDARY_COLOR_ARRAY_STRIDE:
   case GL_SECONDARY_COLOR_ARRAY_BUFFER_BINDING: return &ctx->arrays.secondary;
+  case GL_FOG_COORD_ARRAY_TYPE:
+  case GL_FOG_COORD_ARRAY_STRIDE:
+  case GL_FOG_COORD_ARRAY_BUFFER_BINDING: return &ctx->arrays.fog;
   default: return nullptr;
   }
 }
@@ -92,13 +97,15 @@ bool get_values(Context* ctx, GLenum pname, Values& out) {
     case GL_COLOR_ARRAY_TYPE:
     case GL_NORMAL_ARRAY_TYPE:
     case GL_TEXTURE_COORD_ARRAY_TYPE:
-    case GL_SECONDARY_COLOR_ARRAY_TYPE: out.add(a->type); break;
+    case GL_SECONDARY_COLOR_ARRAY_TYPE:
+    case GL_FOG_COORD_ARRAY_TYPE: out.add(a->type); break;
     case GL_VERTEX_ARRAY_STRIDE:
     case GL_COLOR_ARRAY_STRIDE:
     case GL_NORMAL_ARRAY_STRIDE:
     case GL_TEXTURE_COORD_ARRAY_STRIDE:
     case GL_EDGE_FLAG_ARRAY_STRIDE:
-    case GL_SECONDARY_COLOR_ARRAY_STRIDE: out.add(a->stride); break;
+    case GL_SECONDARY_COLOR_ARRAY_STRIDE:
+    case GL_FOG_COORD_ARRAY_STRIDE: out.add(a->stride); break;
     default: out.add(a->buffer); break;
     }
     return true;
@@ -316,7 +323,13 @@ bool get_values(Context* ctx, GLenum pname, Values& out) {
     out.kind = Kind::Float;
     out.add(0);
     return true;
-  default: return false;
+  default: {
+    // Texture units, texture environment and generation, fog (src/state/texenv.cpp).
+    int kind = 0;
+    if (!texpipe_get(ctx, pname, &kind, out.v, &out.n)) return false;
+    out.kind = static_cast<Kind>(kind);
+    return true;
+  }
   }
 }
 
@@ -423,6 +436,7 @@ void GLAPIENTRY GetPointerv(GLenum pname, void** params) {
     break;
   case GL_EDGE_FLAG_ARRAY_POINTER: p = ctx->arrays.edgeflag.pointer; break;
   case GL_SECONDARY_COLOR_ARRAY_POINTER: p = ctx->arrays.secondary.pointer; break;
+  case GL_FOG_COORD_ARRAY_POINTER: p = ctx->arrays.fog.pointer; break;
   default: return record_error(ctx, GL_INVALID_ENUM, "glGetPointerv", pname);
   }
   if (params != nullptr) *params = const_cast<void*>(p);

@@ -22,10 +22,13 @@ MatrixStack& current_stack(Context* ctx) {
   }
 }
 
-// Only the modelview and projection matrices feed the composite; texture matrices are read
-// directly by the geometry stage.
+// Only the modelview and projection matrices feed the composite; texture matrices feed the
+// per-vertex texture coordinate setup (validate_texpipe.cpp).
 void matrix_changed(Context* ctx) {
-  if (ctx->matrix_mode != GL_TEXTURE) mark_dirty(ctx, kDirtyTransform | kDirtyClipPlanes);
+  if (ctx->matrix_mode != GL_TEXTURE)
+    mark_dirty(ctx, kDirtyTransform | kDirtyClipPlanes);
+  else
+    mark_dirty(ctx, kDirtyTexture);
 }
 
 void load(const char* func, const glm::mat4& m) {

@@ -8,7 +8,14 @@
 
 namespace pineda {
 
+void validate_texpipe(Context* ctx, uint32_t dirty); // validate_texpipe.cpp
+
 void validate_state(Context* ctx) {
+  // Texture objects change without the context's dirty bits (share groups): the sampler
+  // snapshots are redone when the share group's generation moved (validate_texpipe.cpp).
+  if (ctx->texpipe.any_target_enabled &&
+      ctx->shared->texture_generation != ctx->texpipe.seen_generation)
+    ctx->dirty |= kDirtyTexture;
   const uint32_t dirty = ctx->dirty;
   if (dirty == 0) return;
   RasterState& rs = ctx->raster;
@@ -90,9 +97,8 @@ void validate_state(Context* ctx) {
     // §2.14.1: back colours are computed and selected only with two-sided lighting on.
     rs.two_sided = ls.enabled && ls.two_side;
   }
-  // Only the primary colour is read by the fragment stage until texturing and fog exist
-  // (transform.cpp folds the colour sum of §3.9 into it).
-  rs.attr_count = 4;
+  // Texturing and fog: per-vertex and per-fragment setups, live attribute count.
+  validate_texpipe(ctx, dirty);
   ctx->dirty = 0;
 }
 

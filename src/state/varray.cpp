@@ -43,6 +43,10 @@ bool arrays_mapped(Context* ctx, bool with_elements) {
       (a.color.enabled && mapped(a.color.buffer)) ||
       (a.normal.enabled && mapped(a.normal.buffer)) ||
       (a.texcoord[0].enabled && mapped(a.texcoord[0].buffer)) ||
+      (a.texcoord[1].enabled && mapped(a.texcoord[1].buffer)) ||
+      (a.texcoord[2].enabled && mapped(a.texcoord[2].buffer)) ||
+      (a.texcoord[3].enabled && mapped(a.texcoord[3].buffer)) ||
+      (a.fog.enabled && mapped(a.fog.buffer)) ||
       (a.edgeflag.enabled && mapped(a.edgeflag.buffer)) ||
       (a.secondary.enabled && mapped(a.secondary.buffer)))
     return true;
@@ -172,6 +176,15 @@ void GLAPIENTRY SecondaryColorPointer(GLint size, GLenum type, GLsizei stride, c
   set_pointer("glSecondaryColorPointer", ctx->arrays.secondary, size, type, stride, ptr, ctx);
 }
 
+// GL 1.4 §2.8: one fog coordinate per element, FLOAT or DOUBLE.
+void GLAPIENTRY FogCoordPointer(GLenum type, GLsizei stride, const void* ptr) {
+  PINEDA_CTX_OUTSIDE("glFogCoordPointer");
+  if (stride < 0) return record_error(ctx, GL_INVALID_VALUE, "glFogCoordPointer");
+  if (!type_in(type, {GL_FLOAT, GL_DOUBLE}))
+    return record_error(ctx, GL_INVALID_ENUM, "glFogCoordPointer", type);
+  set_pointer("glFogCoordPointer", ctx->arrays.fog, 1, type, stride, ptr, ctx);
+}
+
 void GLAPIENTRY NormalPointer(GLenum type, GLsizei stride, const void* ptr) {
   PINEDA_CTX_OUTSIDE("glNormalPointer");
   if (stride < 0) return record_error(ctx, GL_INVALID_VALUE, "glNormalPointer");
@@ -211,7 +224,9 @@ void GLAPIENTRY ArrayElement(GLint i) {
   }
   if (a.secondary.enabled) std::copy(v.color2, v.color2 + 3, ctx->cur_color2);
   if (a.normal.enabled) std::copy(v.normal, v.normal + 3, ctx->cur_normal);
-  if (a.texcoord[0].enabled) std::copy(v.tex, v.tex + 4, ctx->cur_tex[0]);
+  for (int u = 0; u < kMaxTexUnits; ++u)
+    if (a.texcoord[u].enabled) std::copy(v.tex[u], v.tex[u] + 4, ctx->cur_tex[u]);
+  if (a.fog.enabled) ctx->texpipe.cur_fog_coord = v.fog;
   if (a.edgeflag.enabled) ctx->cur_edge = v.edge != 0;
   if (a.vertex.enabled && ctx->begin_mode != kOutsideBeginEnd) ctx->imm.push_back(v);
 }

@@ -1,0 +1,346 @@
+// Per-fragment shading: texture coordinates and level of detail (GL 2.1 §3.8.8), texture
+// lookups (src/texture/sampler.h), the texture environments in unit order (§3.8.13), the colour
+// sum (§3.9) and fog (§3.10), for the fragments of one 8x8 block.
+//
+// Level of detail follows llvmpipe: one lambda per 2x2 quad (quads aligned to even pixel
+// positions), from the differences of the coordinates along the quad's upper row (d/dx) and
+// left column (d/dy), with rho the longer of the two scaled derivative vectors (§3.8.8).
+#include "fragment/shade.h"
+
+#include <algorithm>
+#include <bit>
+#include <cmath>
+
+namespace pineda {
+
+namespace {
+
+inline float clamp01(float v) {
+  return v > 0.0f ? (v < 1.0f ? v : 1.0f) : 0.0f;
+}
+
+inline float eval(const PlaneF& p, float fi, float fj) {
+  return p.v0 + fi * p.dx + fj * p.dy;
+}
+
+// log2 as llvmpipe's level-of-detail computation takes it: exact at powers of two and linear
+// in between (floor(log2 x) + x / 2^floor(log2 x) - 1). Its integer part is the exact one, so
+// nearest-level selection is unaffected; the fraction that weighs two levels (§3.8.10
+// LINEAR_MIPMAP_*) follows llvmpipe's.
+inline float fast_log2(float x) {
+  int e = 0;
+  const float m = std::frexp(x, &e); // x = m 2^e, m in [1/2, 1)
+  return static_cast<float>(e - 2) + 2.0f * m;
+}
+
+// One combine argument (§3.8.13 Table 3.26/3.27): the operand applied to the source colour.
+inline void operand_rgb(GLenum op, const float* src, float out[3]) {
+  switch (op) {
+  case GL_SRC_COLOR:
+    for (int k = 0; k < 3; ++k)
+      out[k] = src[k];
+    break;
+  case GL_ONE_MINUS_SRC_COLOR:
+    for (int k = 0; k < 3; ++k)
+      out[k] = 1.0f - src[k];
+    break;
+  case GL_SRC_ALPHA:
+    for (int k = 0; k < 3; ++k)
+      out[k] = src[3];
+    break;
+  default:
+    for (int k = 0; k < 3; ++k)
+      out[k] = 1.0f - src[3];
+    break;
+  }
+}
+
+inline float operand_alpha(GLenum op, const float* src) {
+  return op == GL_SRC_ALPHA ? src[3] : 1.0f - src[3];
+}
+
+// The combine function (§3.8.13 Table 3.24/3.25) on one component.
+inline float combine(GLenum f, float a0, float a1, float a2) {
+  switch (f) {
+  case GL_REPLACE:
+    return a0;
+  case GL_MODULATE:
+    return a0 * a1;
+  case GL_ADD:
+    return a0 + a1;
+  case GL_ADD_SIGNED:
+    return a0 + a1 - 0.5f;
+  case GL_INTERPOLATE:
+    return a0 * a2 + a1 * (1.0f - a2);
+  case GL_SUBTRACT:
+    return a0 - a1;
+  default:
+    return a0;
+  }
+}
+
+} // namespace
+
+void apply_tex_env(const ShadeUnit& u, TexBase base, const float cp[4], const float cf[4],
+                   const float (*tex)[4], const int* slot_of_unit, const float cs[4], float cv[4]) {
+  // The sampler expands the texel by Table 3.23 (ALPHA -> (0,0,0,A), LUMINANCE -> (L,L,L,1),
+  // INTENSITY -> (I,I,I,I), RGB -> (R,G,B,1)); which components the base format really has
+  // still decides between the rows of Table 3.22.
+  const bool has_rgb = base != TexBase::Alpha;
+  const bool has_alpha = base == TexBase::Alpha || base == TexBase::LuminanceAlpha ||
+                         base == TexBase::Intensity || base == TexBase::RGBA;
+  switch (u.mode) {
+  case GL_REPLACE:
+    for (int k = 0; k < 3; ++k)
+      cv[k] = has_rgb ? cs[k] : cp[k];
+    cv[3] = has_alpha ? cs[3] : cp[3];
+    break;
+  case GL_MODULATE:
+    for (int k = 0; k < 3; ++k)
+      cv[k] = has_rgb ? cp[k] * cs[k] : cp[k];
+    cv[3] = has_alpha ? cp[3] * cs[3] : cp[3];
+    break;
+  case GL_DECAL:
+    // Defined for RGB and RGBA (As is 1 for RGB); the other formats get the same formula.
+    for (int k = 0; k < 3; ++k)
+      cv[k] = cp[k] * (1.0f - cs[3]) + cs[k] * cs[3];
+    cv[3] = cp[3];
+    break;
+  case GL_BLEND:
+    for (int k = 0; k < 3; ++k)
+      cv[k] = has_rgb ? cp[k] * (1.0f - cs[k]) + u.color[k] * cs[k] : cp[k];
+    if (base == TexBase::Intensity)
+      cv[3] = cp[3] * (1.0f - cs[3]) + u.color[3] * cs[3];
+    else
+      cv[3] = has_alpha ? cp[3] * cs[3] : cp[3];
+    break;
+  case GL_ADD:
+    for (int k = 0; k < 3; ++k)
+      cv[k] = has_rgb ? cp[k] + cs[k] : cp[k];
+    if (base == TexBase::Intensity)
+      cv[3] = cp[3] + cs[3];
+    else
+      cv[3] = has_alpha ? cp[3] * cs[3] : cp[3];
+    break;
+  case GL_COMBINE: {
+    const auto source = [&](uint8_t s) -> const float* {
+      if (s < kMaxTexUnits) {
+        const int slot = slot_of_unit[s];
+        // GL 1.4: a crossbar reference to a disabled unit is undefined; use the previous colour.
+        return slot >= 0 ? tex[slot] : cp;
+      }
+      if (s == 4) return u.color;
+      if (s == 5) return cf;
+      return cp;
+    };
+    float arg_rgb[3][3], arg_a[3];
+    for (int i = 0; i < 3; ++i) {
+      operand_rgb(u.op_rgb[i], source(u.src_rgb[i]), arg_rgb[i]);
+      arg_a[i] = operand_alpha(u.op_alpha[i], source(u.src_alpha[i]));
+    }
+    if (u.combine_rgb == GL_DOT3_RGB || u.combine_rgb == GL_DOT3_RGBA) {
+      // 4 ((r0 - 1/2)(r1 - 1/2) + (g0 - 1/2)(g1 - 1/2) + (b0 - 1/2)(b1 - 1/2)) in every channel.
+      float d = 0.0f;
+      for (int k = 0; k < 3; ++k)
+        d += (arg_rgb[0][k] - 0.5f) * (arg_rgb[1][k] - 0.5f);
+      d *= 4.0f;
+      for (int k = 0; k < 3; ++k)
+        cv[k] = clamp01(d * u.rgb_scale);
+      // DOT3_RGBA writes the dot product to alpha too, ignoring COMBINE_ALPHA.
+      cv[3] = u.combine_rgb == GL_DOT3_RGBA
+                  ? clamp01(d * u.rgb_scale)
+                  : clamp01(combine(u.combine_alpha, arg_a[0], arg_a[1], arg_a[2]) * u.alpha_scale);
+      return;
+    }
+    for (int k = 0; k < 3; ++k)
+      cv[k] = clamp01(combine(u.combine_rgb, arg_rgb[0][k], arg_rgb[1][k], arg_rgb[2][k]) *
+                      u.rgb_scale);
+    cv[3] = clamp01(combine(u.combine_alpha, arg_a[0], arg_a[1], arg_a[2]) * u.alpha_scale);
+    return;
+  }
+  default:
+    for (int k = 0; k < 4; ++k)
+      cv[k] = cp[k];
+    break;
+  }
+  for (int k = 0; k < 4; ++k)
+    cv[k] = clamp01(cv[k]);
+}
+
+float fog_factor(const ShadeSetup& ss, float c) {
+  float f;
+  switch (ss.fog_mode) {
+  case GL_LINEAR: {
+    // §3.10 eq 3.27: f = (end - c) / (end - start); equal start and end leave no fog range.
+    const float range = ss.fog_end - ss.fog_start;
+    f = range != 0.0f ? (ss.fog_end - c) / range : 1.0f;
+    break;
+  }
+  case GL_EXP:
+    f = std::exp(-ss.fog_density * c);
+    break;   // eq 3.25
+  default: { // EXP2, eq 3.26
+    const float dc = ss.fog_density * c;
+    f = std::exp(-dc * dc);
+    break;
+  }
+  }
+  return clamp01(f);
+}
+
+void shade_block(const FragCtx& ctx, const FragInputs& in, int bx, int by, uint64_t mask,
+                 float (*out)[64]) {
+  const ShadeSetup& ss = *ctx.shade;
+  const ShadeInputs& si = *in.shade;
+  const float fi0 = static_cast<float>(bx - in.ox), fj0 = static_cast<float>(by - in.oy);
+
+  int idx[64];
+  int n = 0;
+  for (uint64_t m = mask; m != 0; m &= m - 1)
+    idx[n++] = std::countr_zero(m);
+  // Row pairs (quad rows) holding a fragment: their every pixel feeds the derivatives.
+  unsigned pairs = 0;
+  for (int k = 0; k < 4; ++k)
+    if ((mask >> (16 * k)) & 0xffffu) pairs |= 1u << k;
+
+  // w at every pixel of those rows: 1 / (1/w) (§3.5.1 eq 3.9).
+  alignas(16) float w[64];
+  for (int k = 0; k < 4; ++k) {
+    if (!(pairs & (1u << k))) continue;
+    for (int p = 16 * k; p < 16 * k + 16; ++p)
+      w[p] =
+          1.0f / eval(si.inv_w, fi0 + static_cast<float>(p & 7), fj0 + static_cast<float>(p >> 3));
+  }
+
+  // Primary (and secondary) colour of each fragment.
+  float cf[64][4];
+  float c2[64][3];
+  for (int f = 0; f < n; ++f) {
+    const int p = idx[f];
+    if (si.const_colors) {
+      for (int c = 0; c < 4; ++c)
+        cf[f][c] = si.color[c];
+      if (ss.color_sum)
+        for (int c = 0; c < 3; ++c)
+          c2[f][c] = si.color2[c];
+      continue;
+    }
+    const float fi = fi0 + static_cast<float>(p & 7), fj = fj0 + static_cast<float>(p >> 3);
+    for (int c = 0; c < 4; ++c)
+      cf[f][c] = clamp01(eval(si.color_w[c], fi, fj) * w[p]);
+    if (ss.color_sum)
+      for (int c = 0; c < 3; ++c)
+        c2[f][c] = clamp01(eval(si.color2_w[c], fi, fj) * w[p]);
+  }
+
+  // Texture lookups of every enabled unit.
+  float tex[kMaxTexUnits][64][4];
+  for (int k = 0; k < ss.unit_count; ++k) {
+    const ShadeUnit& su = ss.unit[k];
+    const PlaneF* tp = si.tex_w[su.index];
+    const bool cube = su.dims == LodDims::Cube;
+    alignas(16) float s[64], t[64], r[64];
+    for (int q = 0; q < 4; ++q) {
+      if (!(pairs & (1u << q))) continue;
+      for (int p = 16 * q; p < 16 * q + 16; ++p) {
+        const float fi = fi0 + static_cast<float>(p & 7), fj = fj0 + static_cast<float>(p >> 3);
+        const float ss_ = eval(tp[0], fi, fj) * w[p];
+        const float tt = eval(tp[1], fi, fj) * w[p];
+        const float rr = eval(tp[2], fi, fj) * w[p];
+        if (cube) {
+          // §3.8.6: cube map coordinates are a direction; q does not matter.
+          s[p] = ss_, t[p] = tt, r[p] = rr;
+        } else {
+          // §3.8.8: the coordinates are divided by q.
+          const float inv_q = 1.0f / (eval(tp[3], fi, fj) * w[p]);
+          s[p] = ss_ * inv_q, t[p] = tt * inv_q, r[p] = rr * inv_q;
+        }
+      }
+    }
+    // lambda per quad.
+    alignas(16) float lam_px[64];
+    const float width = static_cast<float>(su.view.width);
+    const float height = static_cast<float>(su.view.height);
+    const float depth = static_cast<float>(su.view.depth);
+    for (int q = 0; q < 4; ++q) {
+      if (!(pairs & (1u << q))) continue;
+      for (int m = 0; m < 4; ++m) {
+        const int ll = 16 * q + 2 * m, ul = ll + 8, ur = ul + 1;
+        // Scaled derivatives (u, v, w) along x and y (§3.8.8 eq 3.18).
+        float dx[3] = {0, 0, 0}, dy[3] = {0, 0, 0};
+        if (cube) {
+          // Derivatives of the face coordinates of the quad's upper-left major axis.
+          const float ax = std::fabs(s[ul]), ay = std::fabs(t[ul]), az = std::fabs(r[ul]);
+          const int major = (ax >= ay && ax >= az) ? 0 : (ay >= az ? 1 : 2);
+          const auto face = [&](int p, float& u, float& v) {
+            const float d[3] = {s[p], t[p], r[p]};
+            const float ma = std::fabs(d[major]);
+            const float inv = ma > 0.0f ? 0.5f / ma : 0.0f;
+            u = d[major == 0 ? 2 : 0] * inv;
+            v = d[major == 1 ? 2 : 1] * inv;
+          };
+          float u0, v0, u1, v1, u2, v2;
+          face(ul, u0, v0);
+          face(ur, u1, v1);
+          face(ll, u2, v2);
+          dx[0] = (u1 - u0) * width, dx[1] = (v1 - v0) * width;
+          dy[0] = (u0 - u2) * width, dy[1] = (v0 - v2) * width;
+        } else {
+          dx[0] = (s[ur] - s[ul]) * width, dy[0] = (s[ul] - s[ll]) * width;
+          if (su.dims != LodDims::One)
+            dx[1] = (t[ur] - t[ul]) * height, dy[1] = (t[ul] - t[ll]) * height;
+          if (su.dims == LodDims::Three)
+            dx[2] = (r[ur] - r[ul]) * depth, dy[2] = (r[ul] - r[ll]) * depth;
+        }
+        // §3.8.8 eq 3.19: rho = max of the two derivative vectors' lengths; lambda = log2(rho),
+        // taken as half the log of the squared length.
+        const float rho2 = std::max(dx[0] * dx[0] + dx[1] * dx[1] + dx[2] * dx[2],
+                                    dy[0] * dy[0] + dy[1] * dy[1] + dy[2] * dy[2]);
+        // log2(0) is -infinity: plain magnification; keep it finite for the sampler.
+        const float lam = rho2 > 0.0f ? std::max(0.5f * fast_log2(rho2), -64.0f) : -64.0f;
+        lam_px[ll] = lam_px[ll + 1] = lam_px[ul] = lam_px[ur] = lam;
+      }
+    }
+    alignas(16) float gs[64], gt[64], gr[64], gl[64];
+    for (int f = 0; f < n; ++f) {
+      const int p = idx[f];
+      gs[f] = s[p], gt[f] = t[p], gr[f] = r[p], gl[f] = lam_px[p];
+    }
+    sample_texture(su.view, n, gs, gt, gr, gl, su.bias, tex[k]);
+  }
+
+  // Environments in unit order (§3.8.13), colour sum (§3.9), fog (§3.10).
+  for (int f = 0; f < n; ++f) {
+    const int p = idx[f];
+    float c[4] = {cf[f][0], cf[f][1], cf[f][2], cf[f][3]};
+    if (ss.unit_count != 0) {
+      float tf[kMaxTexUnits][4];
+      for (int k = 0; k < ss.unit_count; ++k)
+        for (int ch = 0; ch < 4; ++ch)
+          tf[k][ch] = tex[k][f][ch];
+      for (int k = 0; k < ss.unit_count; ++k) {
+        float cv[4];
+        apply_tex_env(ss.unit[k], ss.unit[k].view.base, c, cf[f], tf, ss.slot_of_unit, tf[k], cv);
+        for (int ch = 0; ch < 4; ++ch)
+          c[ch] = cv[ch];
+      }
+    }
+    // §3.9 clamps the sum; llvmpipe (the tie-breaker) carries it unclamped into fog and
+    // clamps only the final colour, which differs once the sum exceeds 1 under fog.
+    if (ss.color_sum)
+      for (int ch = 0; ch < 3; ++ch)
+        c[ch] += c2[f][ch];
+    if (ss.fog) {
+      const float fi = fi0 + static_cast<float>(p & 7), fj = fj0 + static_cast<float>(p >> 3);
+      const float coord = eval(si.fog_w, fi, fj) * w[p];
+      const float fog = fog_factor(ss, coord);
+      // §3.10: C = f C_r + (1 - f) C_f on R, G and B; alpha is unchanged.
+      for (int ch = 0; ch < 3; ++ch)
+        c[ch] = fog * c[ch] + (1.0f - fog) * ss.fog_color[ch];
+    }
+    for (int ch = 0; ch < 4; ++ch)
+      out[ch][p] = c[ch];
+  }
+}
+
+} // namespace pineda

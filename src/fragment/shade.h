@@ -1,0 +1,77 @@
+// Per-fragment shading for texturing and fog (GL 2.1 §3.8.8 level of detail, §3.8.13 texture
+// environments, §3.9 colour sum, §3.10 fog): the colour of each fragment of a block, which the
+// block loop's ShadePath::PerFragment instances consume. Used only while texturing or fog is
+// on; everything else keeps the Const and Smooth paths.
+#pragma once
+
+#include <GL/gl.h>
+
+#include <cstdint>
+
+#include "fragment/fragment_ops.h"
+#include "texture/sampler.h"
+
+namespace pineda {
+
+// How a unit derives rho (§3.8.8) from the coordinate derivatives.
+enum class LodDims : uint8_t { One, Two, Three, Cube };
+
+// One texture unit as the fragment stage runs it (§3.8.13 Table 3.22/3.23, §3.8.13 combine).
+struct ShadeUnit {
+  int index = 0; // texture unit number (coordinate slot kAttrTex0 + 4 * index)
+  SamplerView view;
+  LodDims dims = LodDims::Two;
+  float bias = 0.0f; // the unit's TEXTURE_LOD_BIAS
+  GLenum mode = GL_MODULATE;
+  float color[4] = {0, 0, 0, 0};
+  GLenum combine_rgb = GL_MODULATE, combine_alpha = GL_MODULATE;
+  // Combine sources as indices: 0..3 texture of unit n, 4 constant, 5 primary, 6 previous.
+  uint8_t src_rgb[3] = {0, 6, 4}, src_alpha[3] = {0, 6, 4};
+  GLenum op_rgb[3] = {GL_SRC_COLOR, GL_SRC_COLOR, GL_SRC_ALPHA};
+  GLenum op_alpha[3] = {GL_SRC_ALPHA, GL_SRC_ALPHA, GL_SRC_ALPHA};
+  float rgb_scale = 1.0f, alpha_scale = 1.0f;
+};
+
+// Everything the per-fragment shading reads that is constant over a draw.
+struct ShadeSetup {
+  int unit_count = 0; // enabled, complete units, in unit order
+  ShadeUnit unit[kMaxTexUnits];
+  int slot_of_unit[kMaxTexUnits] = {-1, -1, -1, -1}; // unit number -> position in unit[], or -1
+  bool color_sum = false; // §3.9: add the secondary colour after texturing
+  bool fog = false;
+  GLenum fog_mode = GL_EXP;
+  float fog_color[4] = {0, 0, 0, 0};
+  float fog_density = 1.0f, fog_start = 0.0f, fog_end = 1.0f;
+};
+
+// Interpolation inputs of one primitive for the per-fragment path: perspective-correct planes
+// (value/w, and 1/w) for the colours, the live units' coordinates and the fog coordinate.
+// Trivially constructible: rasterizers declare one on the stack at no cost and fill it only
+// when the draw shades per fragment.
+struct ShadeInputs {
+  PlaneF inv_w;
+  PlaneF color_w[4];
+  PlaneF color2_w[3];
+  PlaneF tex_w[kMaxTexUnits][4];
+  PlaneF fog_w;
+  // Flat shading, points, or equal vertex colours: the colours are these constants.
+  bool const_colors;
+  float color[4], color2[3];
+};
+
+// Colours of the fragments of `mask` in the block at (bx, by): out[c][8 * row + column] for
+// c = R, G, B, A, unclamped-safe floats (the block loop clamps and rounds). Other entries are
+// left as they are.
+void shade_block(const FragCtx& ctx, const FragInputs& in, int bx, int by, uint64_t mask,
+                 float (*out)[64]);
+
+// Texture environment of one fragment (exposed for tests): previous colour `cp`, primary colour
+// `cf`, every unit's texture colour `tex` (indexed by position in ShadeSetup::unit), the result
+// in `cv`. All values in [0,1].
+void apply_tex_env(const ShadeUnit& u, TexBase base, const float cp[4], const float cf[4],
+                   const float (*tex)[4], const int* slot_of_unit, const float cs[4], float cv[4]);
+
+// Fog blend factor f (§3.10 eq 3.25-3.27) for coordinate c, clamped to [0,1].
+float fog_factor(const ShadeSetup& ss, float c);
+
+} // namespace pineda

@@ -1,0 +1,95 @@
+// Interpolation planes of the per-fragment shading path (GL 2.1 §3.5.1 eq 3.9 for triangles,
+// §3.4.1 eq 3.7 for lines: every attribute perspective-correct, as value/w and 1/w planes).
+#include "raster/setup_shade.h"
+
+namespace pineda {
+
+namespace {
+
+// Calls f(slot, out_plane) for every live attribute plane but the colours.
+template <typename F> void for_each_plane(const ShadeSetup& ss, ShadeInputs& out, F f) {
+  for (int k = 0; k < ss.unit_count; ++k) {
+    const int u = ss.unit[k].index;
+    for (int c = 0; c < 4; ++c)
+      f(kAttrTex0 + 4 * u + c, out.tex_w[u][c]);
+  }
+  if (ss.fog) f(kAttrFog, out.fog_w);
+}
+
+void const_colors(const ShadeSetup& ss, const PVertex& v, int slot, ShadeInputs& out) {
+  // Clamped as the interpolated colours are (GL 2.1 §2.14.6 range of fragment colours).
+  const auto clamp01 = [](float x) { return x > 0.0f ? (x < 1.0f ? x : 1.0f) : 0.0f; };
+  out.const_colors = true;
+  for (int c = 0; c < 4; ++c)
+    out.color[c] = clamp01(v.attr[slot + c]);
+  for (int c = 0; c < 3; ++c)
+    out.color2[c] = ss.color_sum ? clamp01(v.attr[slot + 4 + c]) : 0.0f;
+}
+
+bool same_colors(const ShadeSetup& ss, const PVertex* const* v, int n, int slot) {
+  const int count = ss.color_sum ? 7 : 4;
+  for (int i = 1; i < n; ++i)
+    for (int c = 0; c < count; ++c)
+      if (v[i]->attr[slot + c] != v[0]->attr[slot + c]) return false;
+  return true;
+}
+
+} // namespace
+
+void setup_shade_triangle(const ShadeSetup& ss, const PlaneSetup& ps, const PVertex& a,
+                          const PVertex& b, const PVertex& c, const PVertex& provoking, bool flat,
+                          int color_slot, ShadeInputs& out) {
+  const double wa = a.win[3], wb = b.win[3], wc = c.win[3];
+  out.inv_w = plane_f(ps, wa, wb, wc);
+  const auto plane = [&](int slot, PlaneF& p) {
+    p = plane_f(ps, a.attr[slot] * wa, b.attr[slot] * wb, c.attr[slot] * wc);
+  };
+  for_each_plane(ss, out, plane);
+  const PVertex* v[3] = {&a, &b, &c};
+  // GL 2.1 §2.14.7: flat shading takes the provoking vertex's colours.
+  if (flat || same_colors(ss, v, 3, color_slot)) {
+    const_colors(ss, flat ? provoking : a, color_slot, out);
+    return;
+  }
+  out.const_colors = false;
+  for (int k = 0; k < 4; ++k)
+    plane(color_slot + k, out.color_w[k]);
+  if (ss.color_sum)
+    for (int k = 0; k < 3; ++k)
+      plane(color_slot + 4 + k, out.color2_w[k]);
+}
+
+void setup_shade_line(const ShadeSetup& ss, const PVertex& a, const PVertex& b,
+                      const PVertex& provoking, bool flat, double t0, double tdx, double tdy,
+                      ShadeInputs& out) {
+  const double wa = a.win[3], wb = b.win[3];
+  const auto line_plane = [&](double va, double vb) {
+    const double dv = vb - va;
+    return PlaneF{static_cast<float>(va + dv * t0), static_cast<float>(dv * tdx),
+                  static_cast<float>(dv * tdy)};
+  };
+  out.inv_w = line_plane(wa, wb);
+  const auto plane = [&](int slot, PlaneF& p) {
+    p = line_plane(a.attr[slot] * wa, b.attr[slot] * wb);
+  };
+  for_each_plane(ss, out, plane);
+  const PVertex* v[2] = {&a, &b};
+  if (flat || same_colors(ss, v, 2, kAttrColor)) {
+    const_colors(ss, flat ? provoking : a, kAttrColor, out);
+    return;
+  }
+  out.const_colors = false;
+  for (int k = 0; k < 4; ++k)
+    plane(kAttrColor + k, out.color_w[k]);
+  if (ss.color_sum)
+    for (int k = 0; k < 3; ++k)
+      plane(kAttrColor + 4 + k, out.color2_w[k]);
+}
+
+void setup_shade_point(const ShadeSetup& ss, const PVertex& p, ShadeInputs& out) {
+  out.inv_w = PlaneF{1.0f, 0.0f, 0.0f};
+  for_each_plane(ss, out, [&](int slot, PlaneF& pl) { pl = PlaneF{p.attr[slot], 0.0f, 0.0f}; });
+  const_colors(ss, p, kAttrColor, out);
+}
+
+} // namespace pineda
