@@ -490,6 +490,42 @@ inline void expand_depth(TexBase base, float d, float* out) {
   }
 }
 
+// The common case of a 2D colour texture sampled on its base level only (no mipmap filter and
+// one filter for minification and magnification, so lambda does not matter) with REPEAT or
+// CLAMP_TO_EDGE: the level set-up is hoisted out of the fragment loop.
+void sample_2d_base(const SamplerView& v, int n, const float* s, const float* t, GLenum filter,
+                    float (*rgba)[4]) {
+  LevelCtx c;
+  c.v = &v;
+  c.lv = &v.levels[0][v.base_level];
+  c.bi = c.bj = v.border;
+  c.bk = 0;
+  c.w = c.lv->width - 2 * c.bi;
+  c.h = c.lv->height - 2 * c.bj;
+  c.d = 1;
+  constexpr float k = 1.0f / 255.0f;
+  if (filter == GL_NEAREST) {
+    for (int i = 0; i < n; ++i) {
+      const int x = axis_nearest(s[i], c.w, v.wrap_s).i0;
+      const int y = axis_nearest(t != nullptr ? t[i] : 0.0f, c.h, v.wrap_t).i0;
+      const uint8_t* p = fetch8(c, x, y, 0);
+      rgba[i][0] = p[0] * k, rgba[i][1] = p[1] * k, rgba[i][2] = p[2] * k, rgba[i][3] = p[3] * k;
+    }
+    return;
+  }
+  for (int i = 0; i < n; ++i) {
+    const Axis as = axis_linear_fixed(s[i], c.w, v.wrap_s);
+    const Axis at = axis_linear_fixed(t != nullptr ? t[i] : 0.0f, c.h, v.wrap_t);
+    const uint8_t* t00 = fetch8(c, as.i0, at.i0, 0);
+    const uint8_t* t10 = fetch8(c, as.i1, at.i0, 0);
+    const uint8_t* t01 = fetch8(c, as.i0, at.i1, 0);
+    const uint8_t* t11 = fetch8(c, as.i1, at.i1, 0);
+    for (int q = 0; q < 4; ++q)
+      rgba[i][q] =
+          float(lerp8(lerp8(t00[q], t10[q], as.w8), lerp8(t01[q], t11[q], as.w8), at.w8)) * k;
+  }
+}
+
 } // namespace
 
 void sample_texture(const SamplerView& v, int n, const float* s, const float* t, const float* r,
@@ -509,6 +545,8 @@ void sample_texture(const SamplerView& v, int n, const float* s, const float* t,
       (minf == GL_NEAREST || minf == GL_NEAREST_MIPMAP_NEAREST || minf == GL_NEAREST_MIPMAP_LINEAR)
           ? GL_NEAREST
           : GL_LINEAR;
+  if (fixed && dims == 2 && !mip_linear && !mip_nearest && min_img == v.mag_filter)
+    return sample_2d_base(v, n, s, t, min_img, rgba);
   for (int i = 0; i < n; ++i) {
     float ss = s[i];
     float tt = t != nullptr ? t[i] : 0.0f;
