@@ -3,6 +3,7 @@
 #include <GL/glext.h>
 
 #include <array>
+#include <functional>
 #include <cmath>
 #include <vector>
 
@@ -506,6 +507,94 @@ TEST_F(TextureTest, AttribStackRestoresBindingsAndParameters) {
   glGetTexParameteriv(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, &v);
   EXPECT_EQ(v, GL_NEAREST);
   EXPECT_EQ(err(), GLenum(GL_NO_ERROR));
+}
+
+// GL 2.1 §2.6.3: every texture object and image command is illegal between Begin and End.
+TEST_F(TextureTest, IllegalInsideBeginEnd) {
+  GLuint name = 0;
+  GLint iv[4] = {};
+  GLfloat fv[4] = {};
+  GLboolean res = GL_FALSE;
+  uint8_t px[64] = {};
+  const std::function<void()> calls[] = {
+      [&] { glGenTextures(1, &name); },
+      [&] { glDeleteTextures(1, &name); },
+      [&] { glIsTexture(1); },
+      [&] { glBindTexture(GL_TEXTURE_2D, 1); },
+      [&] { glPrioritizeTextures(1, &name, fv); },
+      [&] { glAreTexturesResident(1, &name, &res); },
+      [&] { glTexParameterf(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR); },
+      [&] { glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR); },
+      [&] { glTexParameterfv(GL_TEXTURE_2D, GL_TEXTURE_BORDER_COLOR, fv); },
+      [&] { glTexParameteriv(GL_TEXTURE_2D, GL_TEXTURE_BORDER_COLOR, iv); },
+      [&] { glGetTexParameterfv(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, fv); },
+      [&] { glGetTexParameteriv(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, iv); },
+      [&] { glGetTexLevelParameteriv(GL_TEXTURE_2D, 0, GL_TEXTURE_WIDTH, iv); },
+      [&] { glGetTexLevelParameterfv(GL_TEXTURE_2D, 0, GL_TEXTURE_WIDTH, fv); },
+      [&] { glTexImage1D(GL_TEXTURE_1D, 0, GL_RGBA, 1, 0, GL_RGBA, GL_UNSIGNED_BYTE, px); },
+      [&] { glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA, 1, 1, 0, GL_RGBA, GL_UNSIGNED_BYTE, px); },
+      [&] { glTexSubImage1D(GL_TEXTURE_1D, 0, 0, 1, GL_RGBA, GL_UNSIGNED_BYTE, px); },
+      [&] { glTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, 1, 1, GL_RGBA, GL_UNSIGNED_BYTE, px); },
+      [&] { glCopyTexImage1D(GL_TEXTURE_1D, 0, GL_RGBA, 0, 0, 1, 0); },
+      [&] { glCopyTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA, 0, 0, 1, 1, 0); },
+      [&] { glCopyTexSubImage1D(GL_TEXTURE_1D, 0, 0, 0, 0, 1); },
+      [&] { glCopyTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, 0, 0, 1, 1); },
+      [&] { glGetTexImage(GL_TEXTURE_2D, 0, GL_RGBA, GL_UNSIGNED_BYTE, px); },
+  };
+  int i = 0;
+  for (const auto& call : calls) {
+    glBegin(GL_TRIANGLES);
+    call();
+    glEnd();
+    EXPECT_EQ(err(), GLenum(GL_INVALID_OPERATION)) << "call " << i;
+    ++i;
+  }
+  // The GL 1.2 commands, through the proc-address table as applications get them.
+  const auto tex_image_3d =
+      reinterpret_cast<PFNGLTEXIMAGE3DPROC>(OSMesaGetProcAddress("glTexImage3D"));
+  const auto tex_sub_image_3d =
+      reinterpret_cast<PFNGLTEXSUBIMAGE3DPROC>(OSMesaGetProcAddress("glTexSubImage3D"));
+  const auto copy_tex_sub_image_3d =
+      reinterpret_cast<PFNGLCOPYTEXSUBIMAGE3DPROC>(OSMesaGetProcAddress("glCopyTexSubImage3D"));
+  ASSERT_TRUE(tex_image_3d && tex_sub_image_3d && copy_tex_sub_image_3d);
+  glBegin(GL_POINTS);
+  tex_image_3d(GL_TEXTURE_3D, 0, GL_RGBA, 1, 1, 1, 0, GL_RGBA, GL_UNSIGNED_BYTE, px);
+  glEnd();
+  EXPECT_EQ(err(), GLenum(GL_INVALID_OPERATION));
+  glBegin(GL_POINTS);
+  tex_sub_image_3d(GL_TEXTURE_3D, 0, 0, 0, 0, 1, 1, 1, GL_RGBA, GL_UNSIGNED_BYTE, px);
+  glEnd();
+  EXPECT_EQ(err(), GLenum(GL_INVALID_OPERATION));
+  glBegin(GL_POINTS);
+  copy_tex_sub_image_3d(GL_TEXTURE_3D, 0, 0, 0, 0, 0, 0, 1, 1);
+  glEnd();
+  EXPECT_EQ(err(), GLenum(GL_INVALID_OPERATION));
+}
+
+// Texture objects are shared between contexts of one share group (GLX 1.4 §3.3.7).
+TEST_F(TextureTest, SharedBetweenContexts) {
+  GLuint t = 0;
+  glGenTextures(1, &t);
+  glBindTexture(GL_TEXTURE_2D, t);
+  const uint8_t px[4] = {10, 20, 30, 40};
+  glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA, 1, 1, 0, GL_RGBA, GL_UNSIGNED_BYTE, px);
+  // A second context of the same share group (what GLX share lists create).
+  pineda::Context* mine = pineda::current_context();
+  {
+    pineda::Context other(mine->shared);
+    pineda::set_current_context(&other);
+    EXPECT_TRUE(glIsTexture(t));
+    glBindTexture(GL_TEXTURE_2D, t);
+    uint8_t back[4] = {};
+    glGetTexImage(GL_TEXTURE_2D, 0, GL_RGBA, GL_UNSIGNED_BYTE, back);
+    EXPECT_EQ(back[1], 20);
+    glDeleteTextures(1, &t);
+    pineda::set_current_context(mine);
+  }
+  EXPECT_FALSE(glIsTexture(t));
+  GLint b = -1;
+  glGetIntegerv(GL_TEXTURE_BINDING_2D, &b);
+  EXPECT_EQ(b, 0); // the name no longer names an object here either
 }
 
 } // namespace
