@@ -391,11 +391,7 @@ void GLAPIENTRY BindTexture(GLenum target, GLuint texture) {
     // §3.8.12: an object keeps the dimensionality of its first binding.
     if (slot->target != 0 && slot->target != target)
       return record_error(ctx, GL_INVALID_OPERATION, "glBindTexture");
-    if (slot->target == 0) {
-      slot->target = target;
-      // A new cube map or 3D texture starts with the same parameters as any other; nothing
-      // depends on the target here.
-    }
+    slot->target = target;
   }
   GLuint& binding = ctx->texobj.bound[ctx->active_texture][ti];
   if (binding == texture) return;

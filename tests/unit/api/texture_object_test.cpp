@@ -379,6 +379,12 @@ TEST_F(TextureTest, SubImageAndGetTexImage) {
   EXPECT_EQ(lb[1], 0);
   EXPECT_EQ(lb[4], 200);
   EXPECT_EQ(lb[7], 255);
+  // An RGBA texture read back as LUMINANCE_ALPHA: L is R alone (llvmpipe).
+  const uint8_t rgba[4] = {40, 50, 60, 70};
+  glTexImage1D(GL_TEXTURE_1D, 0, GL_RGBA, 1, 0, GL_RGBA, GL_UNSIGNED_BYTE, rgba);
+  glGetTexImage(GL_TEXTURE_1D, 0, GL_LUMINANCE_ALPHA, GL_UNSIGNED_BYTE, lb);
+  EXPECT_EQ(lb[0], 40);
+  EXPECT_EQ(lb[1], 70);
   // 3D with IMAGE_HEIGHT and SKIP_IMAGES.
   std::vector<float> vol(2 * 3 * 3, 0.0f); // 2x2 images of height 3, 3 images
   for (size_t i = 0; i < vol.size(); ++i)
