@@ -603,4 +603,46 @@ TEST_F(TextureTest, SharedBetweenContexts) {
   EXPECT_EQ(b, 0); // the name no longer names an object here either
 }
 
+// No compressed formats: generic compressed internal formats store uncompressed, the
+// compressed-image commands always name an unsupported format (§3.8.3).
+TEST_F(TextureTest, CompressedFormats) {
+  GLint n = -1;
+  glGetIntegerv(GL_NUM_COMPRESSED_TEXTURE_FORMATS, &n);
+  EXPECT_EQ(n, 0);
+  GLint list[4] = {-7, -7, -7, -7};
+  glGetIntegerv(GL_COMPRESSED_TEXTURE_FORMATS, list);
+  EXPECT_EQ(list[0], -7);
+  EXPECT_EQ(err(), GLenum(GL_NO_ERROR));
+  const uint8_t px[4] = {10, 20, 30, 40};
+  glTexImage2D(GL_TEXTURE_2D, 0, GL_COMPRESSED_RGBA, 1, 1, 0, GL_RGBA, GL_UNSIGNED_BYTE, px);
+  EXPECT_EQ(err(), GLenum(GL_NO_ERROR));
+  GLint v = -1;
+  glGetTexLevelParameteriv(GL_TEXTURE_2D, 0, GL_TEXTURE_COMPRESSED, &v);
+  EXPECT_EQ(v, GL_FALSE);
+  glGetTexLevelParameteriv(GL_TEXTURE_2D, 0, GL_TEXTURE_INTERNAL_FORMAT, &v);
+  EXPECT_EQ(v, GL_COMPRESSED_RGBA);
+  uint8_t back[4] = {};
+  glGetTexImage(GL_TEXTURE_2D, 0, GL_RGBA, GL_UNSIGNED_BYTE, back);
+  EXPECT_EQ(back[3], 40);
+  const auto cti2d = reinterpret_cast<PFNGLCOMPRESSEDTEXIMAGE2DPROC>(
+      OSMesaGetProcAddress("glCompressedTexImage2D"));
+  const auto ctsi2d = reinterpret_cast<PFNGLCOMPRESSEDTEXSUBIMAGE2DPROC>(
+      OSMesaGetProcAddress("glCompressedTexSubImage2D"));
+  const auto gcti = reinterpret_cast<PFNGLGETCOMPRESSEDTEXIMAGEPROC>(
+      OSMesaGetProcAddress("glGetCompressedTexImage"));
+  ASSERT_TRUE(cti2d && ctsi2d && gcti);
+  cti2d(GL_TEXTURE_2D, 0, GL_COMPRESSED_RGB_S3TC_DXT1_EXT, 4, 4, 0, 8, px);
+  EXPECT_EQ(err(), GLenum(GL_INVALID_ENUM));
+  cti2d(GL_TEXTURE_3D, 0, GL_COMPRESSED_RGB_S3TC_DXT1_EXT, 4, 4, 0, 8, px);
+  EXPECT_EQ(err(), GLenum(GL_INVALID_ENUM));
+  ctsi2d(GL_TEXTURE_2D, 0, 0, 0, 1, 1, GL_COMPRESSED_RGB_S3TC_DXT1_EXT, 8, px);
+  EXPECT_EQ(err(), GLenum(GL_INVALID_ENUM));
+  gcti(GL_TEXTURE_2D, 0, back);
+  EXPECT_EQ(err(), GLenum(GL_INVALID_OPERATION));
+  gcti(GL_TEXTURE_2D, -1, back);
+  EXPECT_EQ(err(), GLenum(GL_INVALID_VALUE));
+  gcti(GL_PROXY_TEXTURE_2D, 0, back);
+  EXPECT_EQ(err(), GLenum(GL_INVALID_ENUM));
+}
+
 } // namespace
