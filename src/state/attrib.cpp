@@ -152,11 +152,11 @@ void save(const Context* c, AttribFrame& f) {
     p.zoom_x = x.zoom_x;
     p.zoom_y = x.zoom_y;
   }
+  if (m & GL_TEXTURE_BIT) save_texture_attrib(c, f.texture_objects);
   texpipe_save_attrib(c, m, f.texpipe);
   save_raster_modes(c, f.raster_modes);
   if (m & GL_ACCUM_BUFFER_BIT) copy_array(f.accum_clear, c->accum.clear);
   if (m & GL_LIST_BIT) f.list_base = c->dlist.base;
-  if (m & GL_TEXTURE_BIT) save_texture_attrib(c, f.texture_objects);
 }
 
 // Restore the groups of `f` and return the derived state they invalidate.
@@ -295,11 +295,11 @@ uint32_t restore(Context* c, const AttribFrame& f) {
     x.zoom_y = p.zoom_y;
     dirty |= kDirtyPixel;
   }
+  if (m & GL_TEXTURE_BIT) restore_texture_attrib(c, f.texture_objects); // marks kDirtyTexture
   dirty |= texpipe_restore_attrib(c, m, f.texpipe);
   dirty |= restore_raster_modes(c, f.raster_modes, m);
   if (m & GL_ACCUM_BUFFER_BIT) copy_array(c->accum.clear, f.accum_clear);
   if (m & GL_LIST_BIT) c->dlist.base = f.list_base;
-  if (m & GL_TEXTURE_BIT) restore_texture_attrib(c, f.texture_objects); // marks kDirtyTexture
   // GL 2.1 §2.14.3: while COLOR_MATERIAL is enabled the tracked material properties follow
   // the current colour, whichever of the two was restored.
   if ((m & (GL_CURRENT_BIT | GL_LIGHTING_BIT | GL_ENABLE_BIT)) && c->lighting.color_material) {

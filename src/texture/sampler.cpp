@@ -297,9 +297,10 @@ Axis axis_linear_fixed(float s, int size, GLenum wrap) {
   return a;
 }
 
-// llvmpipe's 8-bit linear step: v0 + floor((v1 - v0) * w / 256).
+// llvmpipe's 8-bit linear step (a rounding high multiply, pmulhrsw):
+// v0 + floor(((v1 - v0) * w + 128) / 256).
 inline int lerp8(int v0, int v1, int w) {
-  return v0 + (((v1 - v0) * w) >> 8);
+  return v0 + (((v1 - v0) * w + 128) >> 8);
 }
 
 // One filtered level sample.
@@ -373,18 +374,22 @@ inline float compare(GLenum func, float ref, float z) {
 
 // Samples one level with `filter` (NEAREST or LINEAR) at (s, t, r); `ref` is the depth
 // comparison reference. Writes RGBA (for depth textures the (compared) depth in all four).
-void sample_level(const SamplerView& v, int face, int level, GLenum filter, bool fixed, float s,
-                  float t, float r, float ref, float* out) {
+LevelCtx level_ctx(const SamplerView& v, int face, int level, int dims) {
   LevelCtx c;
   c.v = &v;
   c.lv = &v.levels[face][level];
-  const int dims = dims_of(v.target);
   c.bi = v.border;
   c.bj = dims >= 2 ? v.border : 0;
   c.bk = dims >= 3 ? v.border : 0;
   c.w = c.lv->width - 2 * c.bi;
   c.h = c.lv->height - 2 * c.bj;
   c.d = c.lv->depth - 2 * c.bk;
+  return c;
+}
+
+void sample_level(const LevelCtx& c, int dims, GLenum filter, bool fixed, float s, float t, float r,
+                  float ref, float* out) {
+  const SamplerView& v = *c.v;
   if (filter == GL_NEAREST) {
     const Axis as = axis_nearest(s, c.w, v.wrap_s);
     const Axis at = dims >= 2 ? axis_nearest(t, c.h, v.wrap_t) : Axis{0, 0, 0.0f, 0};
@@ -489,6 +494,42 @@ inline void expand_depth(TexBase base, float d, float* out) {
   }
 }
 
+// The common case of a 2D colour texture sampled on its base level only (no mipmap filter and
+// one filter for minification and magnification, so lambda does not matter) with REPEAT or
+// CLAMP_TO_EDGE: the level set-up is hoisted out of the fragment loop.
+void sample_2d_base(const SamplerView& v, int n, const float* s, const float* t, GLenum filter,
+                    float (*rgba)[4]) {
+  LevelCtx c;
+  c.v = &v;
+  c.lv = &v.levels[0][v.base_level];
+  c.bi = c.bj = v.border;
+  c.bk = 0;
+  c.w = c.lv->width - 2 * c.bi;
+  c.h = c.lv->height - 2 * c.bj;
+  c.d = 1;
+  constexpr float k = 1.0f / 255.0f;
+  if (filter == GL_NEAREST) {
+    for (int i = 0; i < n; ++i) {
+      const int x = axis_nearest(s[i], c.w, v.wrap_s).i0;
+      const int y = axis_nearest(t != nullptr ? t[i] : 0.0f, c.h, v.wrap_t).i0;
+      const uint8_t* p = fetch8(c, x, y, 0);
+      rgba[i][0] = p[0] * k, rgba[i][1] = p[1] * k, rgba[i][2] = p[2] * k, rgba[i][3] = p[3] * k;
+    }
+    return;
+  }
+  for (int i = 0; i < n; ++i) {
+    const Axis as = axis_linear_fixed(s[i], c.w, v.wrap_s);
+    const Axis at = axis_linear_fixed(t != nullptr ? t[i] : 0.0f, c.h, v.wrap_t);
+    const uint8_t* t00 = fetch8(c, as.i0, at.i0, 0);
+    const uint8_t* t10 = fetch8(c, as.i1, at.i0, 0);
+    const uint8_t* t01 = fetch8(c, as.i0, at.i1, 0);
+    const uint8_t* t11 = fetch8(c, as.i1, at.i1, 0);
+    for (int q = 0; q < 4; ++q)
+      rgba[i][q] =
+          float(lerp8(lerp8(t00[q], t10[q], as.w8), lerp8(t01[q], t11[q], as.w8), at.w8)) * k;
+  }
+}
+
 } // namespace
 
 void sample_texture(const SamplerView& v, int n, const float* s, const float* t, const float* r,
@@ -508,6 +549,13 @@ void sample_texture(const SamplerView& v, int n, const float* s, const float* t,
       (minf == GL_NEAREST || minf == GL_NEAREST_MIPMAP_NEAREST || minf == GL_NEAREST_MIPMAP_LINEAR)
           ? GL_NEAREST
           : GL_LINEAR;
+  if (fixed && dims == 2 && !mip_linear && !mip_nearest && min_img == v.mag_filter)
+    return sample_2d_base(v, n, s, t, min_img, rgba);
+  // The levels' set-up, once per call.
+  LevelCtx levels[6][kMaxTexLevels];
+  for (int f = 0; f < v.faces; ++f)
+    for (int l = v.base_level; l <= v.max_level; ++l)
+      levels[f][l] = level_ctx(v, f, l, dims);
   for (int i = 0; i < n; ++i) {
     float ss = s[i];
     float tt = t != nullptr ? t[i] : 0.0f;
@@ -525,11 +573,11 @@ void sample_texture(const SamplerView& v, int n, const float* s, const float* t,
     if (lod <= v.c || !(mip_linear || mip_nearest)) {
       // Magnification, or minification without mipmaps: the base level only.
       const GLenum f = lod <= v.c ? v.mag_filter : min_img;
-      sample_level(v, face, v.base_level, f, fixed, ss, tt, rr, ref, out);
+      sample_level(levels[face][v.base_level], dims, f, fixed, ss, tt, rr, ref, out);
     } else if (mip_nearest) {
       const int d = v.base_level + static_cast<int>(std::floor(std::min(lod, 64.0f) + 0.5f));
-      sample_level(v, face, clampi(d, v.base_level, v.max_level), min_img, fixed, ss, tt, rr, ref,
-                   out);
+      sample_level(levels[face][clampi(d, v.base_level, v.max_level)], dims, min_img, fixed, ss, tt,
+                   rr, ref, out);
     } else {
       const float lc = std::min(lod, 64.0f);
       const float fl = std::floor(lc);
@@ -539,12 +587,12 @@ void sample_texture(const SamplerView& v, int n, const float* s, const float* t,
         d0 = v.max_level;
         w = 0.0f;
       }
-      sample_level(v, face, d0, min_img, fixed, ss, tt, rr, ref, out);
+      sample_level(levels[face][d0], dims, min_img, fixed, ss, tt, rr, ref, out);
       if (fixed) {
         const int w8 = static_cast<int>(w * 256.0f);
         if (w8 > 0) {
           float o1[4];
-          sample_level(v, face, d0 + 1, min_img, fixed, ss, tt, rr, ref, o1);
+          sample_level(levels[face][d0 + 1], dims, min_img, fixed, ss, tt, rr, ref, o1);
           for (int q = 0; q < 4; ++q) {
             const int a = static_cast<int>(std::lround(out[q] * 255.0f));
             const int b = static_cast<int>(std::lround(o1[q] * 255.0f));
@@ -553,7 +601,7 @@ void sample_texture(const SamplerView& v, int n, const float* s, const float* t,
         }
       } else if (w > 0.0f) {
         float o1[4];
-        sample_level(v, face, d0 + 1, min_img, fixed, ss, tt, rr, ref, o1);
+        sample_level(levels[face][d0 + 1], dims, min_img, fixed, ss, tt, rr, ref, o1);
         for (int q = 0; q < 4; ++q)
           out[q] += w * (o1[q] - out[q]);
       }

@@ -42,6 +42,8 @@ uint8_t quantize(float x, int bits) {
 bool lookup_internal_format(GLint internalformat, TexFormatInfo& out) {
   using B = TexBase;
   switch (internalformat) {
+  // The generic compressed formats (§3.8.1 Table 3.17) are stored uncompressed.
+  case GL_COMPRESSED_ALPHA:
   case GL_ALPHA:
   case GL_ALPHA4:
   case GL_ALPHA8:
@@ -52,6 +54,7 @@ bool lookup_internal_format(GLint internalformat, TexFormatInfo& out) {
     out = colour(B::Alpha, 0, 0, 0, 16);
     return true;
   case 1:
+  case GL_COMPRESSED_LUMINANCE:
   case GL_LUMINANCE:
   case GL_LUMINANCE4:
   case GL_LUMINANCE8:
@@ -62,6 +65,7 @@ bool lookup_internal_format(GLint internalformat, TexFormatInfo& out) {
     out = colour(B::Luminance, 0, 0, 0, 0, 16);
     return true;
   case 2:
+  case GL_COMPRESSED_LUMINANCE_ALPHA:
   case GL_LUMINANCE_ALPHA:
   case GL_LUMINANCE6_ALPHA2:
   case GL_LUMINANCE8_ALPHA8:
@@ -75,6 +79,7 @@ bool lookup_internal_format(GLint internalformat, TexFormatInfo& out) {
   case GL_LUMINANCE16_ALPHA16:
     out = colour(B::LuminanceAlpha, 0, 0, 0, 16, 16);
     return true;
+  case GL_COMPRESSED_INTENSITY:
   case GL_INTENSITY:
   case GL_INTENSITY4:
   case GL_INTENSITY8:
@@ -88,6 +93,7 @@ bool lookup_internal_format(GLint internalformat, TexFormatInfo& out) {
     out = colour(B::RGB, 3, 3, 2, 0);
     return true;
   case 3:
+  case GL_COMPRESSED_RGB:
   case GL_RGB:
   case GL_RGB8:
     out = colour(B::RGB, 8, 8, 8, 0);
@@ -106,6 +112,7 @@ bool lookup_internal_format(GLint internalformat, TexFormatInfo& out) {
     out = colour(B::RGB, 16, 16, 16, 0);
     return true;
   case 4:
+  case GL_COMPRESSED_RGBA:
   case GL_RGBA:
   case GL_RGBA8:
     out = colour(B::RGBA, 8, 8, 8, 8);

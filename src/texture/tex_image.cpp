@@ -380,7 +380,7 @@ void generate_mipmaps(TextureObject& tex, int face, int dims) {
   if (base < 0 || base >= kMaxTexLevels) return;
   if (tex.images[face][base].width == 0) return;
   const int max_levels = dims == 3 ? kMax3DTexLevels : kMaxTexLevels;
-  for (int level = base + 1; level < max_levels && level <= tex.params.max_level; ++level) {
+  for (int level = base + 1; level < max_levels; ++level) {
     const TexImage& src = tex.images[face][level - 1];
     const int b = src.border, bj = dims >= 2 ? b : 0, bk = dims >= 3 ? b : 0;
     const int sw = src.width - 2 * b, sh = src.height - 2 * bj, sd = src.depth - 2 * bk;
@@ -476,8 +476,13 @@ void GLAPIENTRY GetTexImage(GLenum target, GLint level, GLenum format, GLenum ty
       tmp.assign(im.z.begin(), im.z.end());
     } else {
       tmp.resize(count * 4);
-      for (size_t i = 0; i < count; ++i)
+      // Luminance read-backs take L from R alone (not R + G + B as ReadPixels does), as
+      // llvmpipe does, so that a luminance texture reads back unchanged.
+      const bool lum = format == GL_LUMINANCE || format == GL_LUMINANCE_ALPHA;
+      for (size_t i = 0; i < count; ++i) {
         texel_to_rgba(im.base, &im.rgba[i * 4], &tmp[i * 4]);
+        if (lum) tmp[i * 4 + 1] = tmp[i * 4 + 2] = 0.0f;
+      }
     }
     pack_groups(ctx, tmp.data(), im.width, im.height, im.depth, dims, format, type, pixels);
   } catch (const std::bad_alloc&) {

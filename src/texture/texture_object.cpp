@@ -303,7 +303,8 @@ void restore_texture_attrib(Context* ctx, const TextureAttrib& in) {
   texture_changed(ctx);
 }
 
-// glGet values owned by the texture objects (Tables 6.17, 6.36); 0 for other pnames.
+// glGet values owned by the texture objects (Tables 6.17, 6.36): their count, -1 for an empty
+// list, 0 for other pnames.
 int texture_get_values(Context* ctx, GLenum pname, double* v, bool* is_float) {
   *is_float = false;
   const int ti = pname == GL_TEXTURE_BINDING_1D         ? kTex1D
@@ -326,6 +327,11 @@ int texture_get_values(Context* ctx, GLenum pname, double* v, bool* is_float) {
   case GL_MAX_CUBE_MAP_TEXTURE_SIZE:
     v[0] = kMaxCubeTextureSize;
     return 1;
+  case GL_NUM_COMPRESSED_TEXTURE_FORMATS:
+    v[0] = 0;
+    return 1;
+  case GL_COMPRESSED_TEXTURE_FORMATS:
+    return -1; // an empty list (tex_compressed.cpp)
   case GL_MAX_TEXTURE_LOD_BIAS:
     *is_float = true;
     v[0] = kMaxLodBias;
@@ -391,11 +397,7 @@ void GLAPIENTRY BindTexture(GLenum target, GLuint texture) {
     // §3.8.12: an object keeps the dimensionality of its first binding.
     if (slot->target != 0 && slot->target != target)
       return record_error(ctx, GL_INVALID_OPERATION, "glBindTexture");
-    if (slot->target == 0) {
-      slot->target = target;
-      // A new cube map or 3D texture starts with the same parameters as any other; nothing
-      // depends on the target here.
-    }
+    slot->target = target;
   }
   GLuint& binding = ctx->texobj.bound[ctx->active_texture][ti];
   if (binding == texture) return;

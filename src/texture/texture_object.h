@@ -28,7 +28,6 @@ struct TexImage {
   uint8_t luminance_size = 0, intensity_size = 0, depth_size = 0;
   std::vector<uint8_t> rgba; // colour: 4 bytes per texel, expanded by Table 3.23, rows bottom up
   std::vector<float> z;      // depth: one float per texel
-  int width_no_border() const { return width - 2 * border; }
 };
 
 // The parameters of a texture object (GL 2.1 Table 6.19, §3.8.4, §3.8.14).
