@@ -15,6 +15,8 @@
 
 #include "framebuffer/framebuffer.h"
 #include "framebuffer/pixel_store.h"
+#include "pixel/raster_pos.h"
+#include "pixel/transfer.h"
 #include "raster/raster.h"
 #include "state/lighting_state.h"
 #include "state/texpipe_state.h"
@@ -191,6 +193,7 @@ struct AttribFrame {
   bool color_sum = false; // fog: the COLOR_SUM enable (Table 6.11)
   GLenum read_buffer = GL_FRONT; // pixel (Table 6.27)
   TexPipeAttrib texpipe; // texture environment/generation/enables, fog (src/state/texenv.cpp)
+  TextureAttrib texture_objects{}; // texture: bindings, object parameters (texture_object.cpp)
 };
 
 struct Context {
@@ -292,6 +295,11 @@ struct Context {
   // window-system layer that gives the context a back buffer sets both to GL_BACK.
   GLenum draw_buffer = GL_FRONT;
   GLenum read_buffer = GL_FRONT;
+
+  // ---- pixel transfer, pixel maps and zoom (GL 2.1 §3.6.3, §3.6.4), src/state/pixel.cpp ----
+  PixelTransfer pixel_transfer;
+  // The current raster position (GL 2.1 §2.13), src/state/raster_pos.cpp.
+  RasterPos raster_pos;
 
   // ---- hints (Table 6.38) ----
   GLenum hint_perspective = GL_DONT_CARE;

@@ -11,17 +11,6 @@
 
 namespace pineda {
 
-namespace {
-
-// Where each component of a packed type sits (GL 2.1 Tables 3.9-3.11), in group order: the
-// first component is red for RGB/RGBA and blue for BGRA (Table 3.12).
-struct PackedLayout {
-  int components = 0;
-  int bytes = 0;
-  int shift[4] = {};
-  int bits[4] = {};
-};
-
 bool packed_layout(GLenum type, PackedLayout& out) {
   struct Entry {
     GLenum type;
@@ -49,6 +38,8 @@ bool packed_layout(GLenum type, PackedLayout& out) {
   }
   return false;
 }
+
+namespace {
 
 bool is_color_format(GLenum format) {
   switch (format) {

@@ -23,6 +23,18 @@ bool is_valid_type(GLenum type);
 // True for the packed types of GL 2.1 Table 3.8.
 bool is_packed_pixel_type(GLenum type);
 
+// Where each component of a packed type sits (GL 2.1 Tables 3.9-3.11), in group order: the
+// first component is red for RGB/RGBA and blue for BGRA (Table 3.12).
+struct PackedLayout {
+  int components = 0;
+  int bytes = 0;
+  int shift[4] = {};
+  int bits[4] = {};
+};
+
+// The layout of a packed type of Table 3.8; false for any other type.
+bool packed_layout(GLenum type, PackedLayout& out);
+
 // Elements in one group of `format` (Table 3.6): 1 to 4. 0 for an unknown format.
 int pixel_format_components(GLenum format);
 

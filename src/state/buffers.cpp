@@ -9,6 +9,10 @@
 
 namespace pineda {
 
+// draw_pixels.cpp: ReadPixels through the pixel transfer operations when they are active.
+bool read_pixels_transfer(Context* ctx, int x, int y, int w, int h, GLenum format, GLenum type,
+                          void* pixels);
+
 namespace {
 
 // GL 2.1 §3.6.1 glPixelStore: the parameter and its value check.
@@ -137,6 +141,7 @@ void GLAPIENTRY ReadPixels(GLint x, GLint y, GLsizei w, GLsizei h, GLenum format
   if (format == GL_STENCIL_INDEX && ctx->fb.stencil == nullptr)
     return record_error(ctx, GL_INVALID_OPERATION, "glReadPixels");
   if (pixels == nullptr || w == 0 || h == 0 || ctx->fb.color == nullptr) return;
+  if (read_pixels_transfer(ctx, x, y, w, h, format, type, pixels)) return;
   read_pixels(ctx->fb, x, y, w, h, format, type, ctx->pack, pixels);
 }
 

@@ -13,6 +13,9 @@ bool query_enabled(Context* ctx, GLenum cap, bool* value); // enable.cpp
 // texenv.cpp: up to 16 values; kind 0 integer, 1 boolean, 2 float, 3 normalized.
 bool texpipe_get(Context* ctx, GLenum pname, int* kind, double* values, int* count);
 int texture_get_values(Context* ctx, GLenum pname, double* v, bool* is_float); // texture/
+// Pixel transfer, pixel map sizes, zoom and raster position (pixel.cpp): the number of values
+// written to v (0: not a pixel query) and their kind as the Kind enum's index.
+int pixel_query(const Context* ctx, GLenum pname, double* v, int* kind);
 
 namespace {
 
@@ -78,6 +81,10 @@ bool get_values(Context* ctx, GLenum pname, Values& out) {
   if (const int tn = texture_get_values(ctx, pname, tv, &tf)) {
     if (tf) out.kind = Kind::Float;
     for (int i = 0; i < tn; ++i) out.add(tv[i]);
+    return true;
+  }
+  if (int kind = 0; (out.n = pixel_query(ctx, pname, out.v, &kind)) > 0) {
+    out.kind = static_cast<Kind>(kind);
     return true;
   }
   if (const ClientArray* a = array_for(ctx, pname)) {

@@ -297,9 +297,10 @@ Axis axis_linear_fixed(float s, int size, GLenum wrap) {
   return a;
 }
 
-// llvmpipe's 8-bit linear step: v0 + floor((v1 - v0) * w / 256).
+// llvmpipe's 8-bit linear step (a rounding high multiply, pmulhrsw):
+// v0 + floor(((v1 - v0) * w + 128) / 256).
 inline int lerp8(int v0, int v1, int w) {
-  return v0 + (((v1 - v0) * w) >> 8);
+  return v0 + (((v1 - v0) * w + 128) >> 8);
 }
 
 // One filtered level sample.

@@ -1,0 +1,201 @@
+// Pixel rectangles and bitmaps to fragments. Every fragment of a run of equal groups shares one
+// colour and one depth, so runs go to the fragment stage's constant-colour block loop with a
+// coverage mask per 8x8 block: the per-fragment operations are exactly those of primitives.
+#include "pixel/pixel_draw.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+#include <vector>
+
+#include "fragment/fragment_ops.h"
+
+namespace pineda {
+
+namespace {
+
+float clamp01(float v) {
+  return v > 0.0f ? (v < 1.0f ? v : 1.0f) : 0.0f;
+}
+
+// Window pixels [lo[n], hi[n]) covered by group n along one axis (§3.6.4): the pixel whose
+// centre c satisfies min <= c < max of the group's two edges. Kept far inside the int range.
+void group_spans(int count, int first, float origin, float zoom, std::vector<int>& lo,
+                 std::vector<int>& hi) {
+  lo.resize(static_cast<size_t>(count));
+  hi.resize(static_cast<size_t>(count));
+  const auto pixel = [](double edge) {
+    const double v = std::ceil(edge - 0.5);
+    return static_cast<int>(std::clamp(v, -1073741824.0, 1073741824.0));
+  };
+  for (int n = 0; n < count; ++n) {
+    const double a = static_cast<double>(origin) + static_cast<double>(zoom) * (first + n);
+    const double b = static_cast<double>(origin) + static_cast<double>(zoom) * (first + n + 1);
+    lo[static_cast<size_t>(n)] = pixel(std::min(a, b));
+    hi[static_cast<size_t>(n)] = pixel(std::max(a, b));
+  }
+}
+
+// Runs the fragments of the window rectangle [x0, x1) x [y0, y1), clipped to the framebuffer
+// and scissor box, through the constant-colour block loop.
+void emit_rect(const FragCtx& fc, FragInputs& in, int x0, int y0, int x1, int y1) {
+  x0 = std::max(x0, fc.clip_x0);
+  y0 = std::max(y0, fc.clip_y0);
+  x1 = std::min(x1, fc.clip_x1 + 1);
+  y1 = std::min(y1, fc.clip_y1 + 1);
+  if (x0 >= x1 || y0 >= y1) return;
+  const BlockFn fn = fc.fn[static_cast<int>(ShadePath::Const)];
+  for (int by = y0 & ~(kBlockSize - 1); by < y1; by += kBlockSize) {
+    for (int bx = x0 & ~(kBlockSize - 1); bx < x1; bx += kBlockSize) {
+      const uint64_t mask = rect_block_mask(x0, y0, x1 - 1, y1 - 1, bx, by);
+      if (mask == 0) continue;
+      in.ox = bx;
+      in.oy = by;
+      fn(fc, in, bx, by, mask);
+    }
+  }
+}
+
+void set_color(FragInputs& in, const float* rgba) {
+  for (int c = 0; c < 4; ++c)
+    in.const_color[c] = color_to_unorm8(rgba[c]);
+}
+
+} // namespace
+
+void draw_pixel_rect(const RasterState& rs, const Framebuffer& fb, const PixelRect& r) {
+  const PixelPlacement& p = r.place;
+  if (p.w <= 0 || p.h <= 0 || (r.rgba == nullptr) == (r.depth == nullptr)) return;
+  FragCtx fc;
+  prepare_fragments(rs, fb, fc);
+  if (fc.noop) return;
+  std::vector<int> col_lo, col_hi, row_lo, row_hi;
+  group_spans(p.w, p.col0, p.x, p.zoom_x, col_lo, col_hi);
+  group_spans(p.h, p.row0, p.y, p.zoom_y, row_lo, row_hi);
+
+  FragInputs in;
+  if (r.rgba == nullptr) set_color(in, r.color);
+  const double fixed_z = clamp01(r.z) * fc.depth_max;
+  in.z.v0 = fixed_z;
+  for (int m = 0; m < p.h; ++m) {
+    const int y0 = row_lo[static_cast<size_t>(m)], y1 = row_hi[static_cast<size_t>(m)];
+    if (y0 >= y1 || y1 <= fc.clip_y0 || y0 > fc.clip_y1) continue;
+    const size_t row = static_cast<size_t>(m) * static_cast<size_t>(p.w);
+    // A run of neighbouring groups with equal fragments: [run_x0, run_x1).
+    bool run = false;
+    int run_x0 = 0, run_x1 = 0;
+    uint8_t run_color[4] = {};
+    double run_z = 0.0;
+    const auto flush = [&]() {
+      if (!run) return;
+      std::memcpy(in.const_color, run_color, 4);
+      in.z.v0 = run_z;
+      emit_rect(fc, in, run_x0, y0, run_x1, y1);
+      run = false;
+    };
+    for (int n = 0; n < p.w; ++n) {
+      const size_t g = row + static_cast<size_t>(n);
+      const int x0 = col_lo[static_cast<size_t>(n)], x1 = col_hi[static_cast<size_t>(n)];
+      if (x0 >= x1 || (r.present != nullptr && r.present[g] == 0)) {
+        flush();
+        continue;
+      }
+      uint8_t color[4];
+      double z = fixed_z;
+      if (r.rgba != nullptr) {
+        for (int c = 0; c < 4; ++c)
+          color[c] = color_to_unorm8(r.rgba[g * 4 + c]);
+      } else {
+        std::memcpy(color, in.const_color, 4);
+        z = clamp01(r.depth[g]) * fc.depth_max;
+      }
+      if (run && z == run_z && std::memcmp(color, run_color, 4) == 0) {
+        if (x0 == run_x1) {
+          run_x1 = x1;
+          continue;
+        }
+        if (x1 == run_x0) { // negative zoom: groups go leftwards
+          run_x0 = x0;
+          continue;
+        }
+      }
+      flush();
+      run = true;
+      run_x0 = x0;
+      run_x1 = x1;
+      std::memcpy(run_color, color, 4);
+      run_z = z;
+    }
+    flush();
+  }
+}
+
+void draw_stencil_rect(const RasterState& rs, const Framebuffer& fb, const PixelPlacement& p,
+                       const uint32_t* index, const uint8_t* present) {
+  if (fb.stencil == nullptr || p.w <= 0 || p.h <= 0) return;
+  int cx0 = 0, cy0 = 0, cx1 = fb.width, cy1 = fb.height;
+  if (rs.scissor_test) {
+    cx0 = std::max(cx0, rs.scissor[0]);
+    cy0 = std::max(cy0, rs.scissor[1]);
+    cx1 = static_cast<int>(std::min<int64_t>(cx1, int64_t{rs.scissor[0]} + rs.scissor[2]));
+    cy1 = static_cast<int>(std::min<int64_t>(cy1, int64_t{rs.scissor[1]} + rs.scissor[3]));
+  }
+  const uint8_t wm = static_cast<uint8_t>(rs.stencil_writemask & 0xffu);
+  if (wm == 0) return;
+  std::vector<int> col_lo, col_hi, row_lo, row_hi;
+  group_spans(p.w, p.col0, p.x, p.zoom_x, col_lo, col_hi);
+  group_spans(p.h, p.row0, p.y, p.zoom_y, row_lo, row_hi);
+  for (int m = 0; m < p.h; ++m) {
+    const int y0 = std::max(row_lo[static_cast<size_t>(m)], cy0);
+    const int y1 = std::min(row_hi[static_cast<size_t>(m)], cy1);
+    for (int n = 0; n < p.w && y0 < y1; ++n) {
+      const size_t g = static_cast<size_t>(m) * static_cast<size_t>(p.w) + static_cast<size_t>(n);
+      if (present != nullptr && present[g] == 0) continue;
+      const int x0 = std::max(col_lo[static_cast<size_t>(n)], cx0);
+      const int x1 = std::min(col_hi[static_cast<size_t>(n)], cx1);
+      const uint8_t v = static_cast<uint8_t>(index[g] & 0xffu);
+      for (int y = y0; y < y1; ++y) {
+        uint8_t* s = fb.stencil + static_cast<ptrdiff_t>(y) * fb.width;
+        for (int x = x0; x < x1; ++x)
+          s[x] = static_cast<uint8_t>((s[x] & ~wm) | (v & wm));
+      }
+    }
+  }
+}
+
+void draw_bitmap(const RasterState& rs, const Framebuffer& fb, int x, int y, int w, int h,
+                 const uint8_t* bits, const float color[4], float z) {
+  if (w <= 0 || h <= 0) return;
+  FragCtx fc;
+  prepare_fragments(rs, fb, fc);
+  if (fc.noop) return;
+  const int64_t x0 = std::max<int64_t>(x, fc.clip_x0), y0 = std::max<int64_t>(y, fc.clip_y0);
+  const int64_t x1 = std::min<int64_t>(int64_t{x} + w, int64_t{fc.clip_x1} + 1);
+  const int64_t y1 = std::min<int64_t>(int64_t{y} + h, int64_t{fc.clip_y1} + 1);
+  if (x0 >= x1 || y0 >= y1) return;
+  FragInputs in;
+  set_color(in, color);
+  in.z.v0 = clamp01(z) * fc.depth_max;
+  const BlockFn fn = fc.fn[static_cast<int>(ShadePath::Const)];
+  // One block loop call per 8x8 block, its coverage gathered from the bits.
+  for (int by = static_cast<int>(y0) & ~(kBlockSize - 1); by < y1; by += kBlockSize) {
+    for (int bx = static_cast<int>(x0) & ~(kBlockSize - 1); bx < x1; bx += kBlockSize) {
+      uint64_t mask = 0;
+      for (int j = 0; j < kBlockSize; ++j) {
+        const int py = by + j;
+        if (py < y0 || py >= y1) continue;
+        const uint8_t* row = bits + static_cast<size_t>(py - y) * static_cast<size_t>(w);
+        for (int i = 0; i < kBlockSize; ++i) {
+          const int px = bx + i;
+          if (px >= x0 && px < x1 && row[px - x] != 0) mask |= uint64_t{1} << (8 * j + i);
+        }
+      }
+      if (mask == 0) continue;
+      in.ox = bx;
+      in.oy = by;
+      fn(fc, in, bx, by, mask);
+    }
+  }
+}
+
+} // namespace pineda

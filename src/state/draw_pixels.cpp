@@ -1,0 +1,255 @@
+// glDrawPixels (GL 2.1 §3.6.4, §4.3.1), glBitmap (§3.7), glCopyPixels (§4.3.3), and glReadPixels
+// when pixel transfer operations are active (§4.3.2; buffers.cpp keeps the direct path).
+#include <algorithm>
+#include <cmath>
+#include <vector>
+
+#include "core/api_util.h"
+#include "dispatch.h"
+#include "framebuffer/read_pixels.h"
+#include "geometry/geometry.h"
+#include "pixel/pixel_draw.h"
+#include "pixel/unpack.h"
+
+namespace pineda {
+
+namespace {
+
+// Groups converted per step, so that huge images do not need a float copy of themselves.
+constexpr size_t kStripGroups = size_t{1} << 16;
+
+PixelPlacement placement_at(const Context* ctx, int w, int h) {
+  PixelPlacement p;
+  p.w = w;
+  p.h = h;
+  p.x = ctx->raster_pos.win[0];
+  p.y = ctx->raster_pos.win[1];
+  p.zoom_x = ctx->pixel_transfer.zoom_x;
+  p.zoom_y = ctx->pixel_transfer.zoom_y;
+  return p;
+}
+
+// Draws `h` rows of `w` groups in strips of rows; unpack(rows, row_count, out) fills one strip
+// of colours, depths or indices and draw(placement, data) sends it on.
+template <typename T, typename Unpack, typename Draw>
+void in_strips(PixelPlacement p, size_t per_group, Unpack unpack, Draw draw) {
+  const int h = p.h;
+  const int rows = static_cast<int>(std::max<size_t>(1, kStripGroups / static_cast<size_t>(p.w)));
+  std::vector<T> buf(static_cast<size_t>(std::min(rows, h)) * static_cast<size_t>(p.w) * per_group);
+  const int row0 = p.row0;
+  for (int m = 0; m < h; m += rows) {
+    const int n = std::min(rows, h - m);
+    unpack(m, n, buf.data());
+    p.row0 = row0 + m;
+    p.h = n;
+    draw(p, buf.data());
+  }
+}
+
+// The fragment colour of depth groups and the depth of colour groups (§3.6.4).
+void draw_color_strip(Context* ctx, const PixelPlacement& p, const float* rgba) {
+  PixelRect r;
+  r.place = p;
+  r.rgba = rgba;
+  r.z = ctx->raster_pos.win[2];
+  draw_pixel_rect(ctx->raster, ctx->fb, r);
+}
+
+void draw_depth_strip(Context* ctx, const PixelPlacement& p, const float* depth) {
+  PixelRect r;
+  r.place = p;
+  r.depth = depth;
+  std::copy(ctx->raster_pos.color, ctx->raster_pos.color + 4, r.color);
+  draw_pixel_rect(ctx->raster, ctx->fb, r);
+}
+
+// The part of the w x h rectangle at (x, y) inside the framebuffer.
+struct Inside {
+  int x0, y0, x1, y1;
+  bool empty() const { return x0 >= x1 || y0 >= y1; }
+};
+
+Inside inside_fb(const Framebuffer& fb, int x, int y, int w, int h) {
+  return Inside{static_cast<int>(std::max<int64_t>(x, 0)),
+                static_cast<int>(std::max<int64_t>(y, 0)),
+                static_cast<int>(std::min<int64_t>(int64_t{x} + w, fb.width)),
+                static_cast<int>(std::min<int64_t>(int64_t{y} + h, fb.height))};
+}
+
+PixelStore tight_store() {
+  PixelStore st;
+  st.alignment = 1;
+  return st;
+}
+
+} // namespace
+
+// GL 2.1 §4.3.2 with pixel transfer operations that can change the result: the framebuffer
+// values are read as floats, transformed, and packed per the pack state. False when the
+// direct path (read_pixels) gives the same result. The caller has checked the arguments.
+bool read_pixels_transfer(Context* ctx, int x, int y, int w, int h, GLenum format, GLenum type,
+                          void* pixels) {
+  const PixelTransfer& xfer = ctx->pixel_transfer;
+  const bool depth = format == GL_DEPTH_COMPONENT, stencil = format == GL_STENCIL_INDEX;
+  if (depth     ? !depth_transfer_active(xfer)
+      : stencil ? !stencil_transfer_active(xfer)
+                : !rgba_transfer_active(xfer))
+    return false;
+  const Inside in = inside_fb(ctx->fb, x, y, w, h);
+  if (in.empty()) return true;
+  const int iw = in.x1 - in.x0, ih = in.y1 - in.y0;
+  // Pack only the groups inside the framebuffer: same rows as the full image, skipping the
+  // groups before them (pixels outside the window are undefined, §4.3.2, and left untouched).
+  PixelStore st = store_2d(ctx->pack);
+  if (st.row_length == 0) st.row_length = w;
+  st.skip_pixels += in.x0 - x;
+  st.skip_rows += in.y0 - y;
+  const size_t n = static_cast<size_t>(iw) * static_cast<size_t>(ih);
+  const PixelStore tight = tight_store();
+  if (depth) {
+    std::vector<float> z(n);
+    read_pixels(ctx->fb, in.x0, in.y0, iw, ih, GL_DEPTH_COMPONENT, GL_FLOAT, tight, z.data());
+    transfer_depth(xfer, z.data(), n);
+    pack_depth(z.data(), iw, ih, 1, type, st, pixels);
+  } else if (stencil) {
+    std::vector<uint32_t> s(n);
+    read_pixels(ctx->fb, in.x0, in.y0, iw, ih, GL_STENCIL_INDEX, GL_UNSIGNED_INT, tight, s.data());
+    transfer_stencil(xfer, s.data(), n);
+    pack_index(s.data(), iw, ih, 1, type, st, pixels);
+  } else {
+    std::vector<float> c(n * 4);
+    read_pixels(ctx->fb, in.x0, in.y0, iw, ih, GL_RGBA, GL_FLOAT, tight, c.data());
+    transfer_rgba(xfer, c.data(), n);
+    pack_rgba(c.data(), iw, ih, 1, format, type, st, pixels);
+  }
+  return true;
+}
+
+namespace exec {
+
+void GLAPIENTRY DrawPixels(GLsizei width, GLsizei height, GLenum format, GLenum type,
+                           const void* pixels) {
+  PINEDA_CTX_OUTSIDE("glDrawPixels");
+  if (width < 0 || height < 0) return record_error(ctx, GL_INVALID_VALUE, "glDrawPixels");
+  const GLenum err = check_pixel_format_type(format, type);
+  if (err != GL_NO_ERROR) return record_error(ctx, err, "glDrawPixels", format);
+  // §4.3.1 (and Mesa for depth): drawing into a buffer that does not exist.
+  if ((format == GL_STENCIL_INDEX && ctx->fb.stencil == nullptr) ||
+      (format == GL_DEPTH_COMPONENT && ctx->fb.depth == nullptr))
+    return record_error(ctx, GL_INVALID_OPERATION, "glDrawPixels");
+  // §3.6.4: with an invalid raster position DrawPixels is ignored.
+  if (!ctx->raster_pos.valid || width == 0 || height == 0 || pixels == nullptr ||
+      ctx->fb.color == nullptr)
+    return;
+  validate_state(ctx);
+  const PixelStore st = store_2d(ctx->unpack);
+  const PixelTransfer& xfer = ctx->pixel_transfer;
+  const PixelPlacement p = placement_at(ctx, width, height);
+  // Each strip unpacks `rows` rows starting at row `m` of the client image.
+  const auto strip_store = [&](int m) {
+    PixelStore s = st;
+    if (s.row_length == 0) s.row_length = width;
+    s.skip_rows += m;
+    return s;
+  };
+  if (format == GL_STENCIL_INDEX) {
+    in_strips<uint32_t>(
+        p, 1,
+        [&](int m, int rows, uint32_t* out) {
+          unpack_index(pixels, width, rows, 1, format, type, strip_store(m), xfer, out);
+        },
+        [&](const PixelPlacement& q, const uint32_t* idx) {
+          draw_stencil_rect(ctx->raster, ctx->fb, q, idx, nullptr);
+        });
+  } else if (format == GL_DEPTH_COMPONENT) {
+    in_strips<float>(
+        p, 1,
+        [&](int m, int rows, float* out) {
+          unpack_depth(pixels, width, rows, 1, type, strip_store(m), xfer, out);
+        },
+        [&](const PixelPlacement& q, const float* z) { draw_depth_strip(ctx, q, z); });
+  } else {
+    in_strips<float>(
+        p, 4,
+        [&](int m, int rows, float* out) {
+          unpack_rgba(pixels, width, rows, 1, format, type, strip_store(m), xfer, out);
+        },
+        [&](const PixelPlacement& q, const float* rgba) { draw_color_strip(ctx, q, rgba); });
+  }
+}
+
+void GLAPIENTRY Bitmap(GLsizei width, GLsizei height, GLfloat xorig, GLfloat yorig, GLfloat xmove,
+                       GLfloat ymove, const GLubyte* bitmap) {
+  PINEDA_CTX_OUTSIDE("glBitmap");
+  if (width < 0 || height < 0) return record_error(ctx, GL_INVALID_VALUE, "glBitmap");
+  RasterPos& rp = ctx->raster_pos;
+  // §3.7: with an invalid raster position the bitmap is ignored, the position not moved.
+  if (!rp.valid) return;
+  if (bitmap != nullptr && width > 0 && height > 0 && ctx->fb.color != nullptr) {
+    validate_state(ctx);
+    // Unpacked like DrawPixels of COLOR_INDEX / BITMAP, before any conversion (§3.7).
+    const size_t n = static_cast<size_t>(width) * static_cast<size_t>(height);
+    std::vector<uint32_t> idx(n);
+    unpack_index(bitmap, width, height, 1, GL_COLOR_INDEX, GL_BITMAP, store_2d(ctx->unpack),
+                 PixelTransfer{}, idx.data());
+    std::vector<uint8_t> bits(n);
+    for (size_t i = 0; i < n; ++i)
+      bits[i] = static_cast<uint8_t>(idx[i] & 1u);
+    // (x_ll, y_ll) = (floor(x_rp - x_bo), floor(y_rp - y_bo)). A raster position that should
+    // be an integer often arrives a rounding error below it; like Mesa, a small epsilon keeps
+    // it on that integer.
+    constexpr float kEps = 1e-4f;
+    const auto corner = [](float v) {
+      const double f = std::floor(static_cast<double>(v));
+      return static_cast<int>(std::clamp(f, -1073741824.0, 1073741824.0));
+    };
+    draw_bitmap(ctx->raster, ctx->fb, corner(rp.win[0] - xorig + kEps),
+                corner(rp.win[1] - yorig + kEps), width, height, bits.data(), rp.color, rp.win[2]);
+  }
+  rp.win[0] += xmove;
+  rp.win[1] += ymove;
+}
+
+void GLAPIENTRY CopyPixels(GLint x, GLint y, GLsizei width, GLsizei height, GLenum type) {
+  PINEDA_CTX_OUTSIDE("glCopyPixels");
+  if (type != GL_COLOR && type != GL_DEPTH && type != GL_STENCIL)
+    return record_error(ctx, GL_INVALID_ENUM, "glCopyPixels", type);
+  if (width < 0 || height < 0) return record_error(ctx, GL_INVALID_VALUE, "glCopyPixels");
+  if ((type == GL_DEPTH && ctx->fb.depth == nullptr) ||
+      (type == GL_STENCIL && ctx->fb.stencil == nullptr))
+    return record_error(ctx, GL_INVALID_OPERATION, "glCopyPixels");
+  if (!ctx->raster_pos.valid || ctx->fb.color == nullptr) return;
+  // Source pixels outside the window are undefined (§4.3.2); Pineda makes no fragments for
+  // them, so only the part inside is read and drawn, at its place in the full rectangle.
+  const Inside in = inside_fb(ctx->fb, x, y, width, height);
+  if (in.empty()) return;
+  validate_state(ctx);
+  const int iw = in.x1 - in.x0, ih = in.y1 - in.y0;
+  PixelPlacement p = placement_at(ctx, iw, ih);
+  p.col0 = in.x0 - x;
+  p.row0 = in.y0 - y;
+  // The whole source is read before anything is drawn, so overlapping rectangles copy the
+  // old contents (§4.3.3: as if ReadPixels, then DrawPixels).
+  const size_t n = static_cast<size_t>(iw) * static_cast<size_t>(ih);
+  const PixelStore tight = tight_store();
+  const PixelTransfer& xfer = ctx->pixel_transfer;
+  if (type == GL_STENCIL) {
+    std::vector<uint32_t> s(n);
+    read_pixels(ctx->fb, in.x0, in.y0, iw, ih, GL_STENCIL_INDEX, GL_UNSIGNED_INT, tight, s.data());
+    transfer_stencil(xfer, s.data(), n);
+    draw_stencil_rect(ctx->raster, ctx->fb, p, s.data(), nullptr);
+  } else if (type == GL_DEPTH) {
+    std::vector<float> z(n);
+    read_pixels(ctx->fb, in.x0, in.y0, iw, ih, GL_DEPTH_COMPONENT, GL_FLOAT, tight, z.data());
+    transfer_depth(xfer, z.data(), n);
+    draw_depth_strip(ctx, p, z.data());
+  } else {
+    std::vector<float> c(n * 4);
+    read_pixels(ctx->fb, in.x0, in.y0, iw, ih, GL_RGBA, GL_FLOAT, tight, c.data());
+    if (rgba_transfer_active(xfer)) transfer_rgba(xfer, c.data(), n);
+    draw_color_strip(ctx, p, c.data());
+  }
+}
+
+} // namespace exec
+} // namespace pineda
