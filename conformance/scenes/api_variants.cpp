@@ -17,7 +17,7 @@ namespace {
 // is the same point after the perspective division (GL 2.1 §2.11). The integer forms receive
 // integer positions; the float forms a quarter-pixel offset.
 void vertex_variant(int variant, int xi, int yi) {
-  const int kind = variant % 8;     // s, sv, i, iv, f, fv, d, dv
+  const int kind = variant % 8;    // s, sv, i, iv, f, fv, d, dv
   const int size = 2 + variant / 8; // 2, 3, 4
   const bool integer = kind < 4;
   const double off = integer ? 0.0 : 0.25;
@@ -32,78 +32,30 @@ void vertex_variant(int variant, int xi, int yi) {
                         static_cast<GLfloat>(w)};
   const GLdouble d[4] = {X, Y, Z, w};
   switch (variant) {
-  case 0:
-    glVertex2s(s[0], s[1]);
-    break;
-  case 1:
-    glVertex2sv(s);
-    break;
-  case 2:
-    glVertex2i(i[0], i[1]);
-    break;
-  case 3:
-    glVertex2iv(i);
-    break;
-  case 4:
-    glVertex2f(f[0], f[1]);
-    break;
-  case 5:
-    glVertex2fv(f);
-    break;
-  case 6:
-    glVertex2d(d[0], d[1]);
-    break;
-  case 7:
-    glVertex2dv(d);
-    break;
-  case 8:
-    glVertex3s(s[0], s[1], s[2]);
-    break;
-  case 9:
-    glVertex3sv(s);
-    break;
-  case 10:
-    glVertex3i(i[0], i[1], i[2]);
-    break;
-  case 11:
-    glVertex3iv(i);
-    break;
-  case 12:
-    glVertex3f(f[0], f[1], f[2]);
-    break;
-  case 13:
-    glVertex3fv(f);
-    break;
-  case 14:
-    glVertex3d(d[0], d[1], d[2]);
-    break;
-  case 15:
-    glVertex3dv(d);
-    break;
-  case 16:
-    glVertex4s(s[0], s[1], s[2], s[3]);
-    break;
-  case 17:
-    glVertex4sv(s);
-    break;
-  case 18:
-    glVertex4i(i[0], i[1], i[2], i[3]);
-    break;
-  case 19:
-    glVertex4iv(i);
-    break;
-  case 20:
-    glVertex4f(f[0], f[1], f[2], f[3]);
-    break;
-  case 21:
-    glVertex4fv(f);
-    break;
-  case 22:
-    glVertex4d(d[0], d[1], d[2], d[3]);
-    break;
-  default:
-    glVertex4dv(d);
-    break;
+  case 0: glVertex2s(s[0], s[1]); break;
+  case 1: glVertex2sv(s); break;
+  case 2: glVertex2i(i[0], i[1]); break;
+  case 3: glVertex2iv(i); break;
+  case 4: glVertex2f(f[0], f[1]); break;
+  case 5: glVertex2fv(f); break;
+  case 6: glVertex2d(d[0], d[1]); break;
+  case 7: glVertex2dv(d); break;
+  case 8: glVertex3s(s[0], s[1], s[2]); break;
+  case 9: glVertex3sv(s); break;
+  case 10: glVertex3i(i[0], i[1], i[2]); break;
+  case 11: glVertex3iv(i); break;
+  case 12: glVertex3f(f[0], f[1], f[2]); break;
+  case 13: glVertex3fv(f); break;
+  case 14: glVertex3d(d[0], d[1], d[2]); break;
+  case 15: glVertex3dv(d); break;
+  case 16: glVertex4s(s[0], s[1], s[2], s[3]); break;
+  case 17: glVertex4sv(s); break;
+  case 18: glVertex4i(i[0], i[1], i[2], i[3]); break;
+  case 19: glVertex4iv(i); break;
+  case 20: glVertex4f(f[0], f[1], f[2], f[3]); break;
+  case 21: glVertex4fv(f); break;
+  case 22: glVertex4d(d[0], d[1], d[2], d[3]); break;
+  default: glVertex4dv(d); break;
   }
 }
 
@@ -118,7 +70,7 @@ template <typename T> T level_to(double level) {
 }
 
 void color_variant(int variant, const double level[4]) {
-  const int kind = variant % 16; // b, bv, s, sv, i, iv, f, fv, d, dv, ub, ubv, us, usv, ui, uiv
+  const int kind = variant % 16;       // b, bv, s, sv, i, iv, f, fv, d, dv, ub, ubv, us, usv, ui, uiv
   const bool four = variant >= 16;
   GLbyte b[4];
   GLshort s[4];
@@ -140,106 +92,42 @@ void color_variant(int variant, const double level[4]) {
   }
   if (!four) {
     switch (kind) {
-    case 0:
-      glColor3b(b[0], b[1], b[2]);
-      break;
-    case 1:
-      glColor3bv(b);
-      break;
-    case 2:
-      glColor3s(s[0], s[1], s[2]);
-      break;
-    case 3:
-      glColor3sv(s);
-      break;
-    case 4:
-      glColor3i(i[0], i[1], i[2]);
-      break;
-    case 5:
-      glColor3iv(i);
-      break;
-    case 6:
-      glColor3f(f[0], f[1], f[2]);
-      break;
-    case 7:
-      glColor3fv(f);
-      break;
-    case 8:
-      glColor3d(d[0], d[1], d[2]);
-      break;
-    case 9:
-      glColor3dv(d);
-      break;
-    case 10:
-      glColor3ub(ub[0], ub[1], ub[2]);
-      break;
-    case 11:
-      glColor3ubv(ub);
-      break;
-    case 12:
-      glColor3us(us[0], us[1], us[2]);
-      break;
-    case 13:
-      glColor3usv(us);
-      break;
-    case 14:
-      glColor3ui(ui[0], ui[1], ui[2]);
-      break;
-    default:
-      glColor3uiv(ui);
-      break;
+    case 0: glColor3b(b[0], b[1], b[2]); break;
+    case 1: glColor3bv(b); break;
+    case 2: glColor3s(s[0], s[1], s[2]); break;
+    case 3: glColor3sv(s); break;
+    case 4: glColor3i(i[0], i[1], i[2]); break;
+    case 5: glColor3iv(i); break;
+    case 6: glColor3f(f[0], f[1], f[2]); break;
+    case 7: glColor3fv(f); break;
+    case 8: glColor3d(d[0], d[1], d[2]); break;
+    case 9: glColor3dv(d); break;
+    case 10: glColor3ub(ub[0], ub[1], ub[2]); break;
+    case 11: glColor3ubv(ub); break;
+    case 12: glColor3us(us[0], us[1], us[2]); break;
+    case 13: glColor3usv(us); break;
+    case 14: glColor3ui(ui[0], ui[1], ui[2]); break;
+    default: glColor3uiv(ui); break;
     }
     return;
   }
   switch (kind) {
-  case 0:
-    glColor4b(b[0], b[1], b[2], b[3]);
-    break;
-  case 1:
-    glColor4bv(b);
-    break;
-  case 2:
-    glColor4s(s[0], s[1], s[2], s[3]);
-    break;
-  case 3:
-    glColor4sv(s);
-    break;
-  case 4:
-    glColor4i(i[0], i[1], i[2], i[3]);
-    break;
-  case 5:
-    glColor4iv(i);
-    break;
-  case 6:
-    glColor4f(f[0], f[1], f[2], f[3]);
-    break;
-  case 7:
-    glColor4fv(f);
-    break;
-  case 8:
-    glColor4d(d[0], d[1], d[2], d[3]);
-    break;
-  case 9:
-    glColor4dv(d);
-    break;
-  case 10:
-    glColor4ub(ub[0], ub[1], ub[2], ub[3]);
-    break;
-  case 11:
-    glColor4ubv(ub);
-    break;
-  case 12:
-    glColor4us(us[0], us[1], us[2], us[3]);
-    break;
-  case 13:
-    glColor4usv(us);
-    break;
-  case 14:
-    glColor4ui(ui[0], ui[1], ui[2], ui[3]);
-    break;
-  default:
-    glColor4uiv(ui);
-    break;
+  case 0: glColor4b(b[0], b[1], b[2], b[3]); break;
+  case 1: glColor4bv(b); break;
+  case 2: glColor4s(s[0], s[1], s[2], s[3]); break;
+  case 3: glColor4sv(s); break;
+  case 4: glColor4i(i[0], i[1], i[2], i[3]); break;
+  case 5: glColor4iv(i); break;
+  case 6: glColor4f(f[0], f[1], f[2], f[3]); break;
+  case 7: glColor4fv(f); break;
+  case 8: glColor4d(d[0], d[1], d[2], d[3]); break;
+  case 9: glColor4dv(d); break;
+  case 10: glColor4ub(ub[0], ub[1], ub[2], ub[3]); break;
+  case 11: glColor4ubv(ub); break;
+  case 12: glColor4us(us[0], us[1], us[2], us[3]); break;
+  case 13: glColor4usv(us); break;
+  case 14: glColor4ui(ui[0], ui[1], ui[2], ui[3]); break;
+  default: glColor4uiv(ui); break;
   }
 }
 
@@ -271,8 +159,8 @@ PINEDA_SCENE(color_variants, "glColor{3,4}{b,s,i,f,d,ub,us,ui}[v] incl. negative
   clear_frame(0.25f, 0.25f, 0.25f, 0.25f);
   // Levels per triangle vertex; alpha is stored in the RGBA buffer, so the 4-component forms are
   // checked on alpha too. Level 0.5 is left out: it is a rounding tie for most types.
-  const double levels[6][4] = {{1.0, 0.25, 0.0, 1.0},    {0.0, 1.0, 0.75, 0.625},
-                               {0.375, 0.0, 1.0, 0.25},  {-1.0, 0.875, 1.5, 0.0},
+  const double levels[6][4] = {{1.0, 0.25, 0.0, 1.0},   {0.0, 1.0, 0.75, 0.625},
+                               {0.375, 0.0, 1.0, 0.25}, {-1.0, 0.875, 1.5, 0.0},
                                {1.5, -0.5, 0.125, 1.25}, {0.625, 0.625, -0.25, 0.875}};
   for (int v = 0; v < 32; ++v) {
     const int x0 = 2 + (v % 8) * 32, y0 = 2 + (v / 8) * 64;
@@ -286,8 +174,7 @@ PINEDA_SCENE(color_variants, "glColor{3,4}{b,s,i,f,d,ub,us,ui}[v] incl. negative
   }
 }
 
-PINEDA_SCENE(rect_variants,
-             "glRect{s,i,f,d}[v] with reversed corners; upper half culls back faces") {
+PINEDA_SCENE(rect_variants, "glRect{s,i,f,d}[v] with reversed corners; upper half culls back faces") {
   clear_frame(0.0f, 0.0f, 0.0f);
   // glRect(x1, y1, x2, y2) is the polygon (x1,y1) (x2,y1) (x2,y2) (x1,y2) (GL 2.1 §2.10): it is
   // counter-clockwise only when x1 < x2 and y1 < y2 have the same order, so swapping one pair
@@ -301,42 +188,21 @@ PINEDA_SCENE(rect_variants,
                        y0 + (k / 2) * 28 + 26};
         if (k == 1) std::swap(r[0], r[2]); // clockwise
         if (k == 2) std::swap(r[1], r[3]); // clockwise
-        if (k == 3) {
-          std::swap(r[0], r[2]);
-          std::swap(r[1], r[3]);
-        } // counter-clockwise again
-        if (v >= 4)
-          for (double& c : r)
-            c += 0.25; // the float and double forms get fractions
+        if (k == 3) { std::swap(r[0], r[2]); std::swap(r[1], r[3]); } // counter-clockwise again
+        if (v >= 4) for (double& c : r) c += 0.25; // the float and double forms get fractions
         palette_color(v * 4 + k);
         const GLshort s[4] = {GLshort(r[0]), GLshort(r[1]), GLshort(r[2]), GLshort(r[3])};
         const GLint i[4] = {GLint(r[0]), GLint(r[1]), GLint(r[2]), GLint(r[3])};
         const GLfloat f[4] = {GLfloat(r[0]), GLfloat(r[1]), GLfloat(r[2]), GLfloat(r[3])};
         switch (v) {
-        case 0:
-          glRects(s[0], s[1], s[2], s[3]);
-          break;
-        case 1:
-          glRectsv(s, s + 2);
-          break;
-        case 2:
-          glRecti(i[0], i[1], i[2], i[3]);
-          break;
-        case 3:
-          glRectiv(i, i + 2);
-          break;
-        case 4:
-          glRectf(f[0], f[1], f[2], f[3]);
-          break;
-        case 5:
-          glRectfv(f, f + 2);
-          break;
-        case 6:
-          glRectd(r[0], r[1], r[2], r[3]);
-          break;
-        default:
-          glRectdv(r, r + 2);
-          break;
+        case 0: glRects(s[0], s[1], s[2], s[3]); break;
+        case 1: glRectsv(s, s + 2); break;
+        case 2: glRecti(i[0], i[1], i[2], i[3]); break;
+        case 3: glRectiv(i, i + 2); break;
+        case 4: glRectf(f[0], f[1], f[2], f[3]); break;
+        case 5: glRectfv(f, f + 2); break;
+        case 6: glRectd(r[0], r[1], r[2], r[3]); break;
+        default: glRectdv(r, r + 2); break;
         }
       }
     }
@@ -360,30 +226,12 @@ PINEDA_SCENE(ignored_attributes, "glNormal and glTexCoord between vertices chang
         if (half == 1) {
           const float n[3] = {rng.range(-1, 1), rng.range(-1, 1), rng.range(-1, 1)};
           switch ((t + k) % 6) {
-          case 0:
-            glNormal3f(n[0], n[1], n[2]);
-            glTexCoord2f(n[0], n[1]);
-            break;
-          case 1:
-            glNormal3fv(n);
-            glTexCoord4f(n[0], n[1], n[2], 1.0f);
-            break;
-          case 2:
-            glNormal3b(12, -100, 7);
-            glTexCoord1f(n[2]);
-            break;
-          case 3:
-            glNormal3d(n[0], n[1], n[2]);
-            glTexCoord3f(n[0], n[1], n[2]);
-            break;
-          case 4:
-            glNormal3i(1, 0, -1);
-            glTexCoord2fv(n);
-            break;
-          default:
-            glNormal3s(-3, 2, 1);
-            glTexCoord2d(n[1], n[2]);
-            break;
+          case 0: glNormal3f(n[0], n[1], n[2]); glTexCoord2f(n[0], n[1]); break;
+          case 1: glNormal3fv(n); glTexCoord4f(n[0], n[1], n[2], 1.0f); break;
+          case 2: glNormal3b(12, -100, 7); glTexCoord1f(n[2]); break;
+          case 3: glNormal3d(n[0], n[1], n[2]); glTexCoord3f(n[0], n[1], n[2]); break;
+          case 4: glNormal3i(1, 0, -1); glTexCoord2fv(n); break;
+          default: glNormal3s(-3, 2, 1); glTexCoord2d(n[1], n[2]); break;
           }
         }
         glVertex2f(x, y);
@@ -409,10 +257,8 @@ PINEDA_SCENE(edge_flags, "glEdgeFlag hides polygon edges in GL_LINE and GL_POINT
       for (int v = 0; v < count; ++v) {
         // Flags follow a fixed pattern; the v-array form is used for every other vertex.
         const GLboolean flag = (v % 3) != 1 ? GL_TRUE : GL_FALSE;
-        if (v % 2)
-          glEdgeFlagv(&flag);
-        else
-          glEdgeFlag(flag);
+        if (v % 2) glEdgeFlagv(&flag);
+        else glEdgeFlag(flag);
         palette_color(v + 3 * k);
         float x, y;
         if (k == 0) {
@@ -420,10 +266,10 @@ PINEDA_SCENE(edge_flags, "glEdgeFlag hides polygon edges in GL_LINE and GL_POINT
           x = x0 + 32.0f + 30.0f * std::cos(a);
           y = y0 + 56.0f + 52.0f * std::sin(a);
         } else {
-          const float pts[8][2] = {{0, 0},   {60, 10},  {10, 50}, {20, 112},
-                                   {64, 60}, {60, 110}, {4, 112}, {0, 64}};
-          const float quad[8][2] = {{0, 0},  {60, 0},  {62, 50},  {2, 54},
-                                    {4, 62}, {60, 60}, {64, 112}, {0, 110}};
+          const float pts[8][2] = {{0, 0}, {60, 10}, {10, 50}, {20, 112}, {64, 60}, {60, 110},
+                                   {4, 112}, {0, 64}};
+          const float quad[8][2] = {{0, 0}, {60, 0}, {62, 50}, {2, 54}, {4, 62}, {60, 60},
+                                    {64, 112}, {0, 110}};
           x = x0 + (k == 1 ? pts[v][0] : quad[v][0]);
           y = y0 + (k == 1 ? pts[v][1] : quad[v][1]);
         }

@@ -19,10 +19,8 @@ struct Vtx {
 
 Vtx vtx(float x, float y, int colour, float alpha = 1.0f) {
   const float* p = palette(colour);
-  return Vtx{x,
-             y,
-             {GLubyte(p[0] * 255.0f + 0.5f), GLubyte(p[1] * 255.0f + 0.5f),
-              GLubyte(p[2] * 255.0f + 0.5f), GLubyte(alpha * 255.0f + 0.5f)}};
+  return Vtx{x, y, {GLubyte(p[0] * 255.0f + 0.5f), GLubyte(p[1] * 255.0f + 0.5f),
+                    GLubyte(p[2] * 255.0f + 0.5f), GLubyte(alpha * 255.0f + 0.5f)}};
 }
 
 // Vertices suited to `mode` inside a w x h panel. Quads get one colour per quad and quad strips
@@ -50,8 +48,7 @@ std::vector<Vtx> shape_for(GLenum mode, float w, float h, std::uint32_t seed) {
     for (int t = 0; t < 10; ++t) {
       const float tx = rng.range(0.2f * w, 0.8f * w), ty = rng.range(0.2f * h, 0.8f * h);
       for (int k = 0; k < 3; ++k)
-        v.push_back(
-            vtx(tx + rng.range(-0.3f, 0.3f) * w, ty + rng.range(-0.3f, 0.3f) * h, t + 3 * k));
+        v.push_back(vtx(tx + rng.range(-0.3f, 0.3f) * w, ty + rng.range(-0.3f, 0.3f) * h, t + 3 * k));
     }
     break;
   case GL_TRIANGLE_STRIP:
@@ -106,9 +103,9 @@ void unset_arrays() {
   glDisableClientState(GL_COLOR_ARRAY);
 }
 
-constexpr GLenum kModes[10] = {GL_POINTS,     GL_LINES,          GL_LINE_STRIP,   GL_LINE_LOOP,
-                               GL_TRIANGLES,  GL_TRIANGLE_STRIP, GL_TRIANGLE_FAN, GL_QUADS,
-                               GL_QUAD_STRIP, GL_POLYGON};
+constexpr GLenum kModes[10] = {GL_POINTS,         GL_LINES,          GL_LINE_STRIP, GL_LINE_LOOP,
+                               GL_TRIANGLES,      GL_TRIANGLE_STRIP, GL_TRIANGLE_FAN, GL_QUADS,
+                               GL_QUAD_STRIP,     GL_POLYGON};
 
 // An n x n grid of shared vertices with smooth colours, indexed as triangles.
 struct Grid {
@@ -150,8 +147,7 @@ PINEDA_SCENE(arrays_draw_arrays, "glDrawArrays with each of the ten modes, one p
     const Panel pn = panel(frame, p, 5, 2);
     // Two dummy vertices in front exercise the `first` argument.
     std::vector<Vtx> v{vtx(-50.0f, -50.0f, 0), vtx(-50.0f, -50.0f, 0)};
-    for (const Vtx& x :
-         shape_for(kModes[p], static_cast<float>(pn.w), static_cast<float>(pn.h), 300 + p))
+    for (const Vtx& x : shape_for(kModes[p], static_cast<float>(pn.w), static_cast<float>(pn.h), 300 + p))
       v.push_back(x);
     set_arrays(v);
     glDrawArrays(kModes[p], 2, static_cast<GLsizei>(v.size() - 2));
@@ -159,8 +155,7 @@ PINEDA_SCENE(arrays_draw_arrays, "glDrawArrays with each of the ten modes, one p
   }
 }
 
-PINEDA_SCENE(arrays_elements,
-             "glDrawElements ubyte/ushort/uint and glDrawRangeElements on a shared-vertex grid") {
+PINEDA_SCENE(arrays_elements, "glDrawElements ubyte/ushort/uint and glDrawRangeElements on a shared-vertex grid") {
   clear_frame(0.0f, 0.0f, 0.0f);
   const auto draw_range = proc<PFNGLDRAWRANGEELEMENTSPROC>("glDrawRangeElements");
   for (int p = 0; p < 4; ++p) {
@@ -190,15 +185,12 @@ PINEDA_SCENE(arrays_elements,
   }
 }
 
-PINEDA_SCENE(arrays_array_element,
-             "glArrayElement inside glBegin/glEnd, mixed with immediate colours") {
+PINEDA_SCENE(arrays_array_element, "glArrayElement inside glBegin/glEnd, mixed with immediate colours") {
   clear_frame(0.0f, 0.0f, 0.0f);
-  const Grid g =
-      make_grid(static_cast<float>(frame.width), static_cast<float>(frame.height), 12, 500);
+  const Grid g = make_grid(static_cast<float>(frame.width), static_cast<float>(frame.height), 12, 500);
   set_arrays(g.vertices);
   glBegin(GL_TRIANGLES);
-  for (std::size_t i = 0; i < g.indices.size() / 2; ++i)
-    glArrayElement(static_cast<GLint>(g.indices[i]));
+  for (std::size_t i = 0; i < g.indices.size() / 2; ++i) glArrayElement(static_cast<GLint>(g.indices[i]));
   glEnd();
   // Second half: colour array off, so glArrayElement uses the current colour, which changes
   // between triangles with immediate glColor calls (GL 2.1 §2.8).
@@ -212,9 +204,7 @@ PINEDA_SCENE(arrays_array_element,
   unset_arrays();
 }
 
-PINEDA_SCENE(
-    arrays_types_strides,
-    "Vertex arrays of short/int/float/double x 2/3/4 and colour arrays of all eight types") {
+PINEDA_SCENE(arrays_types_strides, "Vertex arrays of short/int/float/double x 2/3/4 and colour arrays of all eight types") {
   clear_frame(0.0f, 0.0f, 0.0f);
   const GLenum vertex_types[4] = {GL_SHORT, GL_INT, GL_FLOAT, GL_DOUBLE};
   const GLenum colour_types[8] = {GL_BYTE, GL_UNSIGNED_BYTE, GL_SHORT, GL_UNSIGNED_SHORT,
@@ -230,37 +220,22 @@ PINEDA_SCENE(
     constexpr int kStride = 72;
     const int n = 6; // a triangle fan of 6 vertices
     std::vector<unsigned char> data(kStride * n, 0);
-    const float pts[6][2] = {{0.5f, 0.5f},  {0.05f, 0.1f}, {0.9f, 0.05f},
+    const float pts[6][2] = {{0.5f, 0.5f}, {0.05f, 0.1f}, {0.9f, 0.05f},
                              {0.95f, 0.8f}, {0.4f, 0.95f}, {0.06f, 0.7f}};
     for (int i = 0; i < n; ++i) {
       unsigned char* rec = data.data() + i * kStride;
       // Integer types get whole pixels; w = 1 for 4-component positions.
-      const double pos[4] = {
-          std::floor(pts[i][0] * pn.w) + (vtype == GL_FLOAT || vtype == GL_DOUBLE ? 0.25 : 0.0),
-          std::floor(pts[i][1] * pn.h) + (vtype == GL_FLOAT || vtype == GL_DOUBLE ? 0.25 : 0.0),
-          0.0, 1.0};
+      const double pos[4] = {std::floor(pts[i][0] * pn.w) + (vtype == GL_FLOAT || vtype == GL_DOUBLE ? 0.25 : 0.0),
+                             std::floor(pts[i][1] * pn.h) + (vtype == GL_FLOAT || vtype == GL_DOUBLE ? 0.25 : 0.0),
+                             0.0, 1.0};
       for (int k = 0; k < vsize; ++k) {
         unsigned char* slot = rec + 8 * k;
         // Components are packed at the type's size, not at the 8-byte slot size.
         switch (vtype) {
-        case GL_SHORT: {
-          const GLshort s = GLshort(pos[k]);
-          std::memcpy(rec + 2 * k, &s, 2);
-          break;
-        }
-        case GL_INT: {
-          const GLint v = GLint(pos[k]);
-          std::memcpy(rec + 4 * k, &v, 4);
-          break;
-        }
-        case GL_FLOAT: {
-          const GLfloat f = GLfloat(pos[k]);
-          std::memcpy(rec + 4 * k, &f, 4);
-          break;
-        }
-        default:
-          std::memcpy(slot, &pos[k], 8);
-          break;
+        case GL_SHORT: { const GLshort s = GLshort(pos[k]); std::memcpy(rec + 2 * k, &s, 2); break; }
+        case GL_INT: { const GLint v = GLint(pos[k]); std::memcpy(rec + 4 * k, &v, 4); break; }
+        case GL_FLOAT: { const GLfloat f = GLfloat(pos[k]); std::memcpy(rec + 4 * k, &f, 4); break; }
+        default: std::memcpy(slot, &pos[k], 8); break;
         }
       }
       const float* c = palette(i + p);
@@ -269,44 +244,14 @@ PINEDA_SCENE(
       for (int k = 0; k < csize; ++k) {
         const double l = level[k];
         switch (ctype) {
-        case GL_BYTE: {
-          const GLbyte v = GLbyte(std::lround(l * 127));
-          std::memcpy(col + k, &v, 1);
-          break;
-        }
-        case GL_UNSIGNED_BYTE: {
-          const GLubyte v = GLubyte(std::lround(l * 255));
-          std::memcpy(col + k, &v, 1);
-          break;
-        }
-        case GL_SHORT: {
-          const GLshort v = GLshort(std::lround(l * 32767));
-          std::memcpy(col + 2 * k, &v, 2);
-          break;
-        }
-        case GL_UNSIGNED_SHORT: {
-          const GLushort v = GLushort(std::lround(l * 65535));
-          std::memcpy(col + 2 * k, &v, 2);
-          break;
-        }
-        case GL_INT: {
-          const GLint v = GLint(std::llround(l * 2147483647.0));
-          std::memcpy(col + 4 * k, &v, 4);
-          break;
-        }
-        case GL_UNSIGNED_INT: {
-          const GLuint v = GLuint(std::llround(l * 4294967295.0));
-          std::memcpy(col + 4 * k, &v, 4);
-          break;
-        }
-        case GL_FLOAT: {
-          const GLfloat v = GLfloat(l);
-          std::memcpy(col + 4 * k, &v, 4);
-          break;
-        }
-        default:
-          std::memcpy(col + 8 * k, &l, 8);
-          break;
+        case GL_BYTE: { const GLbyte v = GLbyte(std::lround(l * 127)); std::memcpy(col + k, &v, 1); break; }
+        case GL_UNSIGNED_BYTE: { const GLubyte v = GLubyte(std::lround(l * 255)); std::memcpy(col + k, &v, 1); break; }
+        case GL_SHORT: { const GLshort v = GLshort(std::lround(l * 32767)); std::memcpy(col + 2 * k, &v, 2); break; }
+        case GL_UNSIGNED_SHORT: { const GLushort v = GLushort(std::lround(l * 65535)); std::memcpy(col + 2 * k, &v, 2); break; }
+        case GL_INT: { const GLint v = GLint(std::llround(l * 2147483647.0)); std::memcpy(col + 4 * k, &v, 4); break; }
+        case GL_UNSIGNED_INT: { const GLuint v = GLuint(std::llround(l * 4294967295.0)); std::memcpy(col + 4 * k, &v, 4); break; }
+        case GL_FLOAT: { const GLfloat v = GLfloat(l); std::memcpy(col + 4 * k, &v, 4); break; }
+        default: std::memcpy(col + 8 * k, &l, 8); break;
         }
       }
     }
@@ -319,8 +264,7 @@ PINEDA_SCENE(
   }
 }
 
-PINEDA_SCENE(arrays_multi_draw,
-             "glMultiDrawArrays and glMultiDrawElements with several sub-draws") {
+PINEDA_SCENE(arrays_multi_draw, "glMultiDrawArrays and glMultiDrawElements with several sub-draws") {
   clear_frame(0.0f, 0.0f, 0.0f);
   const auto multi_arrays = proc<PFNGLMULTIDRAWARRAYSPROC>("glMultiDrawArrays");
   const auto multi_elements = proc<PFNGLMULTIDRAWELEMENTSPROC>("glMultiDrawElements");
@@ -371,8 +315,7 @@ PINEDA_SCENE(arrays_edge_flags, "glEdgeFlagPointer with polygons in GL_LINE mode
              .allowance = kLineAllowance, .why = kLineWhy) {
   clear_frame(0.0f, 0.0f, 0.0f);
   glPolygonMode(GL_FRONT_AND_BACK, GL_LINE);
-  const Grid g =
-      make_grid(static_cast<float>(frame.width), static_cast<float>(frame.height), 8, 700);
+  const Grid g = make_grid(static_cast<float>(frame.width), static_cast<float>(frame.height), 8, 700);
   // The interior diagonal of every cell is hidden: in each triangle (a, b, d) / (a, d, c) the
   // edge starting at d (b->d->a, and a->d is the first edge of the second) is flagged off.
   std::vector<GLboolean> flags(g.vertices.size(), GL_TRUE);
@@ -394,15 +337,12 @@ PINEDA_SCENE(arrays_edge_flags, "glEdgeFlagPointer with polygons in GL_LINE mode
 
 PINEDA_SCENE(arrays_interleaved, "All fourteen glInterleavedArrays formats, one panel each") {
   clear_frame(0.0f, 0.0f, 0.0f);
-  const GLenum formats[14] = {
-      GL_V2F,         GL_V3F,         GL_C4UB_V2F,        GL_C4UB_V3F,       GL_C3F_V3F,
-      GL_N3F_V3F,     GL_C4F_N3F_V3F, GL_T2F_V3F,         GL_T4F_V4F,        GL_T2F_C4UB_V3F,
-      GL_T2F_C3F_V3F, GL_T2F_N3F_V3F, GL_T2F_C4F_N3F_V3F, GL_T4F_C4F_N3F_V4F};
+  const GLenum formats[14] = {GL_V2F,        GL_V3F,          GL_C4UB_V2F,      GL_C4UB_V3F,
+                              GL_C3F_V3F,    GL_N3F_V3F,      GL_C4F_N3F_V3F,   GL_T2F_V3F,
+                              GL_T4F_V4F,    GL_T2F_C4UB_V3F, GL_T2F_C3F_V3F,   GL_T2F_N3F_V3F,
+                              GL_T2F_C4F_N3F_V3F, GL_T4F_C4F_N3F_V4F};
   // Layout of each format (GL 2.1 Table 2.5): texture, colour, normal, vertex components.
-  struct Layout {
-    int t, c, n, v;
-    bool ub;
-  };
+  struct Layout { int t, c, n, v; bool ub; };
   const Layout layouts[14] = {{0, 0, 0, 2, false}, {0, 0, 0, 3, false}, {0, 4, 0, 2, true},
                               {0, 4, 0, 3, true},  {0, 3, 0, 3, false}, {0, 0, 3, 3, false},
                               {0, 4, 3, 3, false}, {2, 0, 0, 3, false}, {4, 0, 0, 4, false},
@@ -414,22 +354,19 @@ PINEDA_SCENE(arrays_interleaved, "All fourteen glInterleavedArrays formats, one 
     const int natural = 4 * (L.t + (L.ub ? 1 : L.c) + L.n + L.v);
     // Odd panels use an explicit stride larger than the natural one.
     const int stride = p % 2 ? natural + 12 : natural;
-    const std::vector<Vtx> shape =
-        shape_for(GL_TRIANGLE_FAN, static_cast<float>(pn.w), static_cast<float>(pn.h), 800 + p);
+    const std::vector<Vtx> shape = shape_for(GL_TRIANGLE_FAN, static_cast<float>(pn.w),
+                                             static_cast<float>(pn.h), 800 + p);
     std::vector<unsigned char> data(static_cast<std::size_t>(stride) * shape.size(), 0);
     for (std::size_t i = 0; i < shape.size(); ++i) {
       float* out = reinterpret_cast<float*>(data.data() + i * static_cast<std::size_t>(stride));
-      for (int k = 0; k < L.t; ++k)
-        *out++ = 0.5f * k;
+      for (int k = 0; k < L.t; ++k) *out++ = 0.5f * k;
       if (L.ub) {
         std::memcpy(out, shape[i].c, 4);
         ++out;
       } else {
-        for (int k = 0; k < L.c; ++k)
-          *out++ = shape[i].c[k] / 255.0f;
+        for (int k = 0; k < L.c; ++k) *out++ = shape[i].c[k] / 255.0f;
       }
-      for (int k = 0; k < L.n; ++k)
-        *out++ = k == 2 ? 1.0f : 0.0f;
+      for (int k = 0; k < L.n; ++k) *out++ = k == 2 ? 1.0f : 0.0f;
       // Four-component positions carry w = 2 with x, y doubled.
       const float w = L.v == 4 ? 2.0f : 1.0f;
       *out++ = shape[i].x * w;

@@ -23,9 +23,7 @@ struct BufferApi {
 };
 
 // Offsets into a bound buffer are passed where client pointers would be (GL 2.1 §2.9.1).
-const GLvoid* offset(std::size_t bytes) {
-  return reinterpret_cast<const GLvoid*>(bytes);
-}
+const GLvoid* offset(std::size_t bytes) { return reinterpret_cast<const GLvoid*>(bytes); }
 
 struct Vertex {
   GLfloat x, y;
@@ -41,8 +39,7 @@ void ring(float cx, float cy, float r0, float r1, int segments, int colour_base,
     for (int k = 0; k < 2; ++k) {
       const float r = k ? r1 : r0;
       const float* p = palette(colour_base + i + 3 * k);
-      v.push_back(Vertex{cx + r * std::cos(a),
-                         cy + r * std::sin(a),
+      v.push_back(Vertex{cx + r * std::cos(a), cy + r * std::sin(a),
                          {GLubyte(p[0] * 255), GLubyte(p[1] * 255), GLubyte(p[2] * 255), 255}});
     }
   }
@@ -97,10 +94,8 @@ PINEDA_SCENE(buffer_objects, "VBO + IBO with offsets, glBufferSubData and glMapB
   glVertexPointer(2, GL_FLOAT, sizeof(Vertex), offset(lead));
   glColorPointer(4, GL_UNSIGNED_BYTE, sizeof(Vertex), offset(lead + offsetof(Vertex, c)));
   // Inner ring with glDrawElements, outer ring with glDrawRangeElements at an index offset.
-  glDrawElements(GL_TRIANGLES, static_cast<GLsizei>(first_ring_indices), GL_UNSIGNED_SHORT,
-                 offset(0));
-  draw_range(GL_TRIANGLES, static_cast<GLuint>(first_ring_vertices),
-             static_cast<GLuint>(v.size() - 1),
+  glDrawElements(GL_TRIANGLES, static_cast<GLsizei>(first_ring_indices), GL_UNSIGNED_SHORT, offset(0));
+  draw_range(GL_TRIANGLES, static_cast<GLuint>(first_ring_vertices), static_cast<GLuint>(v.size() - 1),
              static_cast<GLsizei>(idx.size() - first_ring_indices), GL_UNSIGNED_SHORT,
              offset(first_ring_indices * sizeof(GLushort)));
   glDisableClientState(GL_VERTEX_ARRAY);
@@ -110,8 +105,7 @@ PINEDA_SCENE(buffer_objects, "VBO + IBO with offsets, glBufferSubData and glMapB
   gl.del(2, buffers);
 }
 
-PINEDA_SCENE(buffer_mixed,
-             "Positions from a buffer, colours from client memory; client indices; glDrawArrays") {
+PINEDA_SCENE(buffer_mixed, "Positions from a buffer, colours from client memory; client indices; glDrawArrays") {
   clear_frame(0.0f, 0.0f, 0.0f);
   const BufferApi gl;
   const auto multi_elements = proc<PFNGLMULTIDRAWELEMENTSPROC>("glMultiDrawElements");
@@ -125,8 +119,7 @@ PINEDA_SCENE(buffer_mixed,
       pos.push_back(6.0f + 244.0f * i / cols + rng.range(-3.0f, 3.0f));
       pos.push_back(6.0f + 244.0f * j / rows + rng.range(-3.0f, 3.0f));
       const float* p = palette(rng.below(16));
-      for (int k = 0; k < 3; ++k)
-        col.push_back(GLubyte(p[k] * 255));
+      for (int k = 0; k < 3; ++k) col.push_back(GLubyte(p[k] * 255));
     }
   }
   GLuint buffers[2];
@@ -146,8 +139,7 @@ PINEDA_SCENE(buffer_mixed,
       strip.push_back(static_cast<GLuint>(j * (cols + 1) + i));
       strip.push_back(static_cast<GLuint>((j + 1) * (cols + 1) + i));
     }
-    glDrawElements(GL_TRIANGLE_STRIP, static_cast<GLsizei>(strip.size()), GL_UNSIGNED_INT,
-                   strip.data());
+    glDrawElements(GL_TRIANGLE_STRIP, static_cast<GLsizei>(strip.size()), GL_UNSIGNED_INT, strip.data());
   }
   // Upper half: indices in an element buffer, drawn by glMultiDrawElements with offsets.
   std::vector<GLuint> all;

@@ -52,8 +52,7 @@ void triangle_grid(float w, float h, int n) {
 
 } // namespace
 
-PINEDA_SCENE(clip_viewport_edges,
-             "Triangles crossing the left/right/bottom/top planes of an inset viewport") {
+PINEDA_SCENE(clip_viewport_edges, "Triangles crossing the left/right/bottom/top planes of an inset viewport") {
   clear_frame(0.0f, 0.0f, 0.0f);
   const int vx = 36, vy = 44, vw = 184, vh = 168;
   outline(frame, vx, vy, vw, vh);
@@ -99,8 +98,7 @@ PINEDA_SCENE(clip_near_far_ortho, "Triangles tilted through the near and far pla
   glEnd();
 }
 
-PINEDA_SCENE(clip_near_perspective,
-             "Perspective triangles reaching between the eye and the near plane") {
+PINEDA_SCENE(clip_near_perspective, "Perspective triangles reaching between the eye and the near plane") {
   clear_frame(0.0f, 0.0f, 0.0f);
   glMatrixMode(GL_PROJECTION);
   glLoadIdentity();
@@ -168,12 +166,11 @@ PINEDA_SCENE(clip_inside_box, "Camera inside a box: faces cross all six view-vol
   glEnd();
 }
 
-PINEDA_SCENE(clip_user_planes,
-             "glClipPlane 0-5 in six panels, planes set under rotated modelviews") {
+PINEDA_SCENE(clip_user_planes, "glClipPlane 0-5 in six panels, planes set under rotated modelviews") {
   clear_frame(0.0f, 0.0f, 0.0f);
-  const GLdouble planes[6][4] = {{1.0, 0.0, 0.0, -20.0},   {0.0, 1.0, 0.0, -30.0},
+  const GLdouble planes[6][4] = {{1.0, 0.0, 0.0, -20.0},  {0.0, 1.0, 0.0, -30.0},
                                  {-1.0, -1.0, 0.0, 140.0}, {1.0, -2.0, 0.0, 50.0},
-                                 {-0.3, 1.0, 0.0, 10.0},   {0.7, 0.7, 0.0, -40.0}};
+                                 {-0.3, 1.0, 0.0, 10.0},  {0.7, 0.7, 0.0, -40.0}};
   for (int p = 0; p < 6; ++p) {
     const Panel pn = panel(frame, p, 3, 2);
     // Plane equations are transformed by the inverse of the modelview current at glClipPlane
@@ -183,14 +180,11 @@ PINEDA_SCENE(clip_user_planes,
     glTranslatef(pn.w * 0.5f, pn.h * 0.5f, 0.0f);
     glRotatef(15.0f * static_cast<float>(p), 0.0f, 0.0f, 1.0f);
     glTranslatef(-pn.w * 0.5f, -pn.h * 0.5f, 0.0f);
-    for (int k = 0; k <= p; ++k)
-      glClipPlane(GL_CLIP_PLANE0 + k, planes[(k + p) % 6]);
+    for (int k = 0; k <= p; ++k) glClipPlane(GL_CLIP_PLANE0 + k, planes[(k + p) % 6]);
     glPopMatrix();
-    for (int k = 0; k <= p; ++k)
-      glEnable(GL_CLIP_PLANE0 + k);
+    for (int k = 0; k <= p; ++k) glEnable(GL_CLIP_PLANE0 + k);
     triangle_grid(static_cast<float>(pn.w), static_cast<float>(pn.h), 9);
-    for (int k = 0; k <= p; ++k)
-      glDisable(GL_CLIP_PLANE0 + k);
+    for (int k = 0; k <= p; ++k) glDisable(GL_CLIP_PLANE0 + k);
   }
 }
 

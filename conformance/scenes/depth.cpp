@@ -11,9 +11,7 @@ namespace {
 
 // Under the default glOrtho(..., -1, 1), window depth is (1 - z) / 2 (GL 2.1 §2.11): the object
 // z that lands on window depth `window_z`.
-double object_z(double window_z) {
-  return 1.0 - 2.0 * window_z;
-}
+double object_z(double window_z) { return 1.0 - 2.0 * window_z; }
 
 // An axis-aligned quad whose window depth runs linearly from z_left to z_right. Corners move by
 // 1/8 pixel so that edges computed from panel sizes (w * 0.3 = 37.5, ...) never pass through
@@ -92,7 +90,7 @@ void depth_precision_scene(const Frame& frame) {
 
 PINEDA_SCENE(depth_funcs, "All eight glDepthFunc against tilted, equal and far-plane surfaces") {
   clear_frame(0.0f, 0.0f, 0.0f);
-  const GLenum funcs[8] = {GL_NEVER,   GL_LESS,     GL_EQUAL,  GL_LEQUAL,
+  const GLenum funcs[8] = {GL_NEVER, GL_LESS,     GL_EQUAL,  GL_LEQUAL,
                            GL_GREATER, GL_NOTEQUAL, GL_GEQUAL, GL_ALWAYS};
   glEnable(GL_DEPTH_TEST);
   for (int p = 0; p < 8; ++p) {
@@ -212,8 +210,7 @@ PINEDA_SCENE(depth_none, "No depth buffer: GL_DEPTH_TEST enabled, every fragment
   depth_precision_scene(frame);
 }
 
-PINEDA_SCENE(depth_interpolation,
-             "Interpenetrating perspective surfaces: depth is linear in window space") {
+PINEDA_SCENE(depth_interpolation, "Interpenetrating perspective surfaces: depth is linear in window space") {
   clear_frame(0.0f, 0.0f, 0.0f);
   glMatrixMode(GL_PROJECTION);
   glLoadIdentity();

@@ -29,8 +29,8 @@ void additive() {
 }
 
 void quarter_color(int i) {
-  static const float colours[4][3] = {
-      {0.25f, 0.0f, 0.0f}, {0.0f, 0.25f, 0.0f}, {0.0f, 0.0f, 0.25f}, {0.25f, 0.25f, 0.0f}};
+  static const float colours[4][3] = {{0.25f, 0.0f, 0.0f}, {0.0f, 0.25f, 0.0f},
+                                      {0.0f, 0.0f, 0.25f}, {0.25f, 0.25f, 0.0f}};
   const float* c = colours[i & 3];
   glColor4f(c[0], c[1], c[2], 0.25f);
 }
@@ -49,19 +49,10 @@ void square_fan(float cx, float cy, float r, int n, int colour) {
   for (int i = 0; i < n; ++i) {
     const float t = 8.0f * static_cast<float>(i) / static_cast<float>(n); // 0..8 around the square
     float x, y;
-    if (t < 2.0f) {
-      x = -r + r * t;
-      y = -r;
-    } else if (t < 4.0f) {
-      x = r;
-      y = -r + r * (t - 2.0f);
-    } else if (t < 6.0f) {
-      x = r - r * (t - 4.0f);
-      y = r;
-    } else {
-      x = -r;
-      y = r - r * (t - 6.0f);
-    }
+    if (t < 2.0f) { x = -r + r * t; y = -r; }
+    else if (t < 4.0f) { x = r; y = -r + r * (t - 2.0f); }
+    else if (t < 6.0f) { x = r - r * (t - 4.0f); y = r; }
+    else { x = -r; y = r - r * (t - 6.0f); }
     rim.push_back(cx + x);
     rim.push_back(cy + y);
   }
@@ -75,8 +66,7 @@ void square_fan(float cx, float cy, float r, int n, int colour) {
 
 } // namespace
 
-PINEDA_SCENE(fill_ties,
-             "Shared edges through pixel centres: horizontal, vertical, diagonal, steep, shallow",
+PINEDA_SCENE(fill_ties, "Shared edges through pixel centres: horizontal, vertical, diagonal, steep, shallow",
              .why = kTieWhy) {
   additive();
   // A 4 x 4 grid of 64-pixel cells: the column picks the pattern, the row the lattice its
@@ -139,8 +129,8 @@ PINEDA_SCENE(fill_fans, "Fans whose centres sit on pixel centres, pixel corners 
   glDisable(GL_BLEND);
 }
 
-PINEDA_SCENE(fill_subpixel_steps,
-             "The same triangles shifted by n/16 pixel, n = 0..15, one cell each", .why = kTieWhy) {
+PINEDA_SCENE(fill_subpixel_steps, "The same triangles shifted by n/16 pixel, n = 0..15, one cell each",
+             .why = kTieWhy) {
   additive();
   for (int n = 0; n < 16; ++n) {
     glLoadIdentity();

@@ -21,8 +21,7 @@ void format_pattern(const Frame& frame) {
     glRectf(x0 + 0.125f, y0 + 0.125f, x1 + 0.125f, y1 + 0.125f);
   };
   // Pure channel bars along the bottom, with alpha ramps.
-  const float bars[4][4] = {
-      {1, 0, 0, 0.25f}, {0, 1, 0, 0.5625f}, {0, 0, 1, 0.875f}, {1, 1, 1, 0.125f}};
+  const float bars[4][4] = {{1, 0, 0, 0.25f}, {0, 1, 0, 0.5625f}, {0, 0, 1, 0.875f}, {1, 1, 1, 0.125f}};
   for (int i = 0; i < 4; ++i) {
     glColor4fv(bars[i]);
     rect(0.05f * w + i * 0.23f * w, 0.04f * h, 0.05f * w + i * 0.23f * w + 0.2f * w, 0.2f * h);
@@ -70,10 +69,9 @@ PINEDA_SCENE(format_argb, "OSMESA_ARGB colour buffer", .format = OSMESA_ARGB) {
 
 PINEDA_SCENE(format_rgb, "OSMESA_RGB (3 bytes per pixel) at 250x170: rows not 4-byte aligned",
              .width = 250, .height = 170, .format = OSMESA_RGB, .softpipe_oracle = true,
-             .why =
-                 "llvmpipe (Mesa 22.3) draws striped garbage into OSMESA_RGB buffers (clears are "
-                 "right, triangles are not, and repeated frames differ); softpipe draws them "
-                 "correctly") {
+             .why = "llvmpipe (Mesa 22.3) draws striped garbage into OSMESA_RGB buffers (clears are "
+                    "right, triangles are not, and repeated frames differ); softpipe draws them "
+                    "correctly") {
   format_pattern(frame);
 }
 

@@ -70,14 +70,12 @@ void depth_rect(float x0, float y0, float x1, float y1, float z) {
   glEnd();
 }
 
-const GLenum kFuncs[8] = {GL_NEVER,   GL_LESS,     GL_EQUAL,  GL_LEQUAL,
+const GLenum kFuncs[8] = {GL_NEVER, GL_LESS, GL_EQUAL, GL_LEQUAL,
                           GL_GREATER, GL_NOTEQUAL, GL_GEQUAL, GL_ALWAYS};
 
 } // namespace
 
-PINEDA_SCENE(frag_scissor_clear,
-             "Scissored clears: nested boxes, boxes partly outside the window, an empty box, masks",
-             .stencil_bits = 8) {
+PINEDA_SCENE(frag_scissor_clear, "Scissored clears: nested boxes, boxes partly outside the window, an empty box, masks", .stencil_bits = 8) {
   fragment_defaults();
   clear_all(0.125f, 0.125f, 0.125f, 0);
   glEnable(GL_SCISSOR_TEST);
@@ -88,11 +86,8 @@ PINEDA_SCENE(frag_scissor_clear,
     glClear(GL_COLOR_BUFFER_BIT);
   }
   // Boxes reaching past every window edge, and one far outside.
-  const int boxes[5][4] = {{-30, -30, 60, 50},
-                           {220, -10, 1000, 40},
-                           {-5, 230, 40, 1000},
-                           {200, 200, 100, 100},
-                           {5000, 5000, 10, 10}};
+  const int boxes[5][4] = {{-30, -30, 60, 50},  {220, -10, 1000, 40}, {-5, 230, 40, 1000},
+                           {200, 200, 100, 100}, {5000, 5000, 10, 10}};
   for (int i = 0; i < 5; ++i) {
     glScissor(boxes[i][0], boxes[i][1], boxes[i][2], boxes[i][3]);
     const float* c = palette(i + 6);
@@ -125,10 +120,8 @@ PINEDA_SCENE(frag_scissor_clear,
   glScissor(0, 0, 120, 110);
   glClearColor(0.0f, 0.0f, 0.0f, 1.0f);
   glClear(GL_COLOR_BUFFER_BIT);
-  const int stencil_boxes[4][5] = {{4, 4, 100, 90, 0x5a},
-                                   {20, 10, 40, 70, 0xff},
-                                   {70, 30, 40, 60, 0x01},
-                                   {10, 60, 90, 20, 0x80}};
+  const int stencil_boxes[4][5] = {
+      {4, 4, 100, 90, 0x5a}, {20, 10, 40, 70, 0xff}, {70, 30, 40, 60, 0x01}, {10, 60, 90, 20, 0x80}};
   for (const auto& b : stencil_boxes) {
     glScissor(b[0], b[1], b[2], b[3]);
     glClearStencil(b[4]);
@@ -138,9 +131,7 @@ PINEDA_SCENE(frag_scissor_clear,
   show_stencil(frame);
 }
 
-PINEDA_SCENE(frag_scissor_draw,
-             "Scissor boxes clipping triangles, lines and points, and a box per panel",
-             .stencil_bits = 8) {
+PINEDA_SCENE(frag_scissor_draw, "Scissor boxes clipping triangles, lines and points, and a box per panel", .stencil_bits = 8) {
   fragment_defaults();
   clear_all(0.0f, 0.0f, 0.0f, 0);
   glEnable(GL_SCISSOR_TEST);
@@ -188,9 +179,7 @@ PINEDA_SCENE(frag_scissor_draw,
   glDisable(GL_SCISSOR_TEST);
 }
 
-PINEDA_SCENE(frag_alpha_test,
-             "glAlphaFunc: the eight functions on steps of alpha and on a smooth alpha ramp",
-             .stencil_bits = 8) {
+PINEDA_SCENE(frag_alpha_test, "glAlphaFunc: the eight functions on steps of alpha and on a smooth alpha ramp", .stencil_bits = 8) {
   fragment_defaults();
   clear_all(0.0f, 0.0f, 0.25f, 0);
   glEnable(GL_ALPHA_TEST);
@@ -222,10 +211,7 @@ PINEDA_SCENE(frag_alpha_test,
   glDisable(GL_ALPHA_TEST);
 }
 
-PINEDA_SCENE(
-    frag_alpha_depth,
-    "Alpha test before the depth test: discarded fragments write no depth, clamped references",
-    .stencil_bits = 8) {
+PINEDA_SCENE(frag_alpha_depth, "Alpha test before the depth test: discarded fragments write no depth, clamped references", .stencil_bits = 8) {
   fragment_defaults();
   clear_all(0.0f, 0.0f, 0.0f, 0);
   glEnable(GL_DEPTH_TEST);
@@ -253,8 +239,7 @@ PINEDA_SCENE(
   glDisable(GL_DEPTH_TEST);
 }
 
-PINEDA_SCENE(frag_stencil_overdraw, "Stencil counting overdraw with INCR, shown per bit plane",
-             .stencil_bits = 8) {
+PINEDA_SCENE(frag_stencil_overdraw, "Stencil counting overdraw with INCR, shown per bit plane", .stencil_bits = 8) {
   fragment_defaults();
   clear_all(0.0f, 0.0f, 0.0f, 0);
   glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
@@ -286,12 +271,10 @@ PINEDA_SCENE(frag_stencil_overdraw, "Stencil counting overdraw with INCR, shown 
   show_stencil(frame);
 }
 
-PINEDA_SCENE(frag_stencil_ops,
-             "The eight stencil operations from three start values, one, two and three layers deep",
-             .stencil_bits = 8) {
+PINEDA_SCENE(frag_stencil_ops, "The eight stencil operations from three start values, one, two and three layers deep", .stencil_bits = 8) {
   fragment_defaults();
   clear_all(0.0f, 0.0f, 0.0f, 0);
-  const GLenum ops[8] = {GL_KEEP, GL_ZERO,   GL_REPLACE,   GL_INCR,
+  const GLenum ops[8] = {GL_KEEP, GL_ZERO, GL_REPLACE, GL_INCR,
                          GL_DECR, GL_INVERT, GL_INCR_WRAP, GL_DECR_WRAP};
   const int starts[3] = {0, 254, 0x5a};
   glEnable(GL_SCISSOR_TEST);
@@ -315,16 +298,13 @@ PINEDA_SCENE(frag_stencil_ops,
   show_stencil(frame);
 }
 
-PINEDA_SCENE(frag_stencil_depth,
-             "sfail, dpfail and dppass: z-fail shadow-volume counting with INCR_WRAP / DECR_WRAP",
-             .stencil_bits = 8) {
+PINEDA_SCENE(frag_stencil_depth, "sfail, dpfail and dppass: z-fail shadow-volume counting with INCR_WRAP / DECR_WRAP", .stencil_bits = 8) {
   fragment_defaults();
   clear_all(0.0f, 0.0f, 0.0f, 0);
   glEnable(GL_DEPTH_TEST);
   // Depth-only receivers: a floor of steps at different depths.
   glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
-  for (int i = 0; i < 4; ++i)
-    depth_rect(0.0f, 64.0f * i, 256.0f, 64.0f * (i + 1), 0.3f + 0.12f * i);
+  for (int i = 0; i < 4; ++i) depth_rect(0.0f, 64.0f * i, 256.0f, 64.0f * (i + 1), 0.3f + 0.12f * i);
   // "Volumes": back faces increment on depth fail, front faces decrement on depth fail
   // (Carmack's reverse), each volume a box from depth 0.2 to 0.5 drawn as a front and a back
   // quad with culling.
@@ -332,11 +312,8 @@ PINEDA_SCENE(frag_stencil_depth,
   glStencilFunc(GL_ALWAYS, 0, 0xff);
   glDepthMask(GL_FALSE);
   glEnable(GL_CULL_FACE);
-  const float boxes[5][4] = {{20, 20, 120, 230},
-                             {60, 40, 200, 120},
-                             {150, 10, 240, 250},
-                             {90, 150, 230, 210},
-                             {30, 100, 60, 180}};
+  const float boxes[5][4] = {{20, 20, 120, 230}, {60, 40, 200, 120}, {150, 10, 240, 250},
+                             {90, 150, 230, 210}, {30, 100, 60, 180}};
   const float zfar[5] = {0.5f, 0.65f, 0.8f, 0.35f, 0.95f};
   for (int pass = 0; pass < 2; ++pass) {
     glCullFace(pass == 0 ? GL_FRONT : GL_BACK);
@@ -370,10 +347,7 @@ PINEDA_SCENE(frag_stencil_depth,
   show_stencil(frame);
 }
 
-PINEDA_SCENE(
-    frag_stencil_decal,
-    "Stencil decals: REPLACE a mask, then draw only where EQUAL; value masks and write masks",
-    .stencil_bits = 8) {
+PINEDA_SCENE(frag_stencil_decal, "Stencil decals: REPLACE a mask, then draw only where EQUAL; value masks and write masks", .stencil_bits = 8) {
   fragment_defaults();
   clear_all(0.0f, 0.0f, 0.0f, 0);
   glEnable(GL_STENCIL_TEST);
@@ -419,9 +393,7 @@ PINEDA_SCENE(
   glDisable(GL_STENCIL_TEST);
 }
 
-PINEDA_SCENE(frag_logic_ops,
-             "The sixteen glLogicOp operations over a colour pattern, with blending on (ignored)",
-             .stencil_bits = 8) {
+PINEDA_SCENE(frag_logic_ops, "The sixteen glLogicOp operations over a colour pattern, with blending on (ignored)", .stencil_bits = 8) {
   fragment_defaults();
   clear_all(0.0f, 0.0f, 0.0f, 0);
   // Blending is on throughout: with COLOR_LOGIC_OP enabled it must have no effect
@@ -455,9 +427,7 @@ PINEDA_SCENE(frag_logic_ops,
   glLogicOp(GL_COPY);
 }
 
-PINEDA_SCENE(frag_write_masks,
-             "Stencil write masks on drawing and clears, with colour and depth masks",
-             .stencil_bits = 8) {
+PINEDA_SCENE(frag_write_masks, "Stencil write masks on drawing and clears, with colour and depth masks", .stencil_bits = 8) {
   fragment_defaults();
   clear_all(0.0f, 0.0f, 0.0f, 0xff);
   glEnable(GL_STENCIL_TEST);
@@ -470,8 +440,7 @@ PINEDA_SCENE(frag_write_masks,
     glStencilOp(GL_INVERT, GL_INVERT, GL_INVERT);
     glRecti(32 * c, 0, 32 * c + 30, 128);
     glStencilOp(GL_INCR_WRAP, GL_INCR_WRAP, GL_INCR_WRAP);
-    for (int r = 0; r < 4; ++r)
-      glRecti(32 * c, 32 * r, 32 * c + 30, 128);
+    for (int r = 0; r < 4; ++r) glRecti(32 * c, 32 * r, 32 * c + 30, 128);
     // Masked stencil clears in the upper half.
     glEnable(GL_SCISSOR_TEST);
     glScissor(32 * c, 130, 30, 60);
@@ -502,9 +471,7 @@ PINEDA_SCENE(frag_write_masks,
   glDisable(GL_STENCIL_TEST);
 }
 
-PINEDA_SCENE(frag_combined,
-             "Scissor, alpha, stencil and depth tests with blending and a logic op, in BGRA",
-             .format = OSMESA_BGRA, .stencil_bits = 8) {
+PINEDA_SCENE(frag_combined, "Scissor, alpha, stencil and depth tests with blending and a logic op, in BGRA", .format = OSMESA_BGRA, .stencil_bits = 8) {
   fragment_defaults();
   clear_all(0.125f, 0.0f, 0.25f, 0);
   glEnable(GL_DEPTH_TEST);

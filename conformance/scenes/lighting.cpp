@@ -132,8 +132,7 @@ void floor_grid(float half, int n) {
 
 } // namespace
 
-PINEDA_SCENE(light_directional,
-             "Nine spheres with different materials under one directional light") {
+PINEDA_SCENE(light_directional, "Nine spheres with different materials under one directional light") {
   clear_frame(0.05f, 0.05f, 0.1f);
   reset_lighting();
   perspective_frame(frame);
@@ -214,8 +213,7 @@ PINEDA_SCENE(light_spot, "A spot light on a finely tessellated floor and a spher
   glDisable(GL_LIGHTING);
 }
 
-PINEDA_SCENE(light_attenuation,
-             "Constant, linear and quadratic attenuation of two positional lights") {
+PINEDA_SCENE(light_attenuation, "Constant, linear and quadratic attenuation of two positional lights") {
   clear_frame(0.0f, 0.0f, 0.0f);
   reset_lighting();
   perspective_frame(frame);
@@ -245,8 +243,7 @@ PINEDA_SCENE(light_attenuation,
   glDisable(GL_LIGHTING);
 }
 
-PINEDA_SCENE(light_eight,
-             "Eight coloured lights (directional and positional) on a sphere and a torus") {
+PINEDA_SCENE(light_eight, "Eight coloured lights (directional and positional) on a sphere and a torus") {
   clear_frame(0.0f, 0.0f, 0.0f);
   reset_lighting();
   perspective_frame(frame);
@@ -280,9 +277,7 @@ PINEDA_SCENE(light_eight,
   glDisable(GL_LIGHTING);
 }
 
-PINEDA_SCENE(
-    light_two_sided,
-    "Two-sided lighting: open half-spheres and a ribbon show back faces with the back material") {
+PINEDA_SCENE(light_two_sided, "Two-sided lighting: open half-spheres and a ribbon show back faces with the back material") {
   clear_frame(0.1f, 0.1f, 0.1f);
   reset_lighting();
   perspective_frame(frame);
@@ -335,9 +330,7 @@ void rainbow(float theta, float phi, float) {
 }
 } // namespace
 
-PINEDA_SCENE(
-    light_color_material,
-    "COLOR_MATERIAL: per-vertex colours drive ambient+diffuse, diffuse, specular, emission") {
+PINEDA_SCENE(light_color_material, "COLOR_MATERIAL: per-vertex colours drive ambient+diffuse, diffuse, specular, emission") {
   clear_frame(0.0f, 0.0f, 0.0f);
   reset_lighting();
   perspective_frame(frame);
@@ -363,9 +356,7 @@ PINEDA_SCENE(
   glDisable(GL_LIGHTING);
 }
 
-PINEDA_SCENE(
-    light_local_viewer_specular,
-    "Local viewer and SEPARATE_SPECULAR_COLOR against the infinite viewer and SINGLE_COLOR") {
+PINEDA_SCENE(light_local_viewer_specular, "Local viewer and SEPARATE_SPECULAR_COLOR against the infinite viewer and SINGLE_COLOR") {
   clear_frame(0.0f, 0.0f, 0.0f);
   reset_lighting();
   perspective_frame(frame);
@@ -389,8 +380,7 @@ PINEDA_SCENE(
   glDisable(GL_LIGHTING);
 }
 
-PINEDA_SCENE(light_normals, "Scaled model-view: unnormalized, RESCALE_NORMAL, NORMALIZE, and "
-                            "NORMALIZE under a non-uniform scale") {
+PINEDA_SCENE(light_normals, "Scaled model-view: unnormalized, RESCALE_NORMAL, NORMALIZE, and NORMALIZE under a non-uniform scale") {
   clear_frame(0.05f, 0.05f, 0.05f);
   reset_lighting();
   perspective_frame(frame);
@@ -419,9 +409,7 @@ PINEDA_SCENE(light_normals, "Scaled model-view: unnormalized, RESCALE_NORMAL, NO
   glDisable(GL_LIGHTING);
 }
 
-PINEDA_SCENE(
-    light_material_begin_end,
-    "glMaterial between glBegin and glEnd changes diffuse, specular and shininess per vertex") {
+PINEDA_SCENE(light_material_begin_end, "glMaterial between glBegin and glEnd changes diffuse, specular and shininess per vertex") {
   clear_frame(0.0f, 0.0f, 0.0f);
   reset_lighting();
   perspective_frame(frame);
@@ -452,8 +440,7 @@ PINEDA_SCENE(
   glDisable(GL_LIGHTING);
 }
 
-PINEDA_SCENE(light_flat_arrays,
-             "Flat-shaded lit polygons and a lit sphere from vertex and normal arrays") {
+PINEDA_SCENE(light_flat_arrays, "Flat-shaded lit polygons and a lit sphere from vertex and normal arrays") {
   clear_frame(0.0f, 0.05f, 0.05f);
   reset_lighting();
   perspective_frame(frame);
@@ -482,8 +469,7 @@ PINEDA_SCENE(light_flat_arrays,
       nrm[k] = std::sin(t) * std::cos(p);
       nrm[k + 1] = std::cos(t);
       nrm[k + 2] = std::sin(t) * std::sin(p);
-      for (int c = 0; c < 3; ++c)
-        pos[k + c] = 0.8f * nrm[k + c];
+      for (int c = 0; c < 3; ++c) pos[k + c] = 0.8f * nrm[k + c];
     }
   glVertexPointer(3, GL_FLOAT, 0, pos);
   glNormalPointer(GL_FLOAT, 0, nrm);
@@ -506,8 +492,7 @@ PINEDA_SCENE(light_flat_arrays,
   glDisable(GL_LIGHTING);
 }
 
-PINEDA_SCENE(color_sum, "GL 1.4 secondary colour: COLOR_SUM on and off, smooth and flat, from "
-                        "glSecondaryColor and from arrays") {
+PINEDA_SCENE(color_sum, "GL 1.4 secondary colour: COLOR_SUM on and off, smooth and flat, from glSecondaryColor and from arrays") {
   const auto secondary3f = proc<PFNGLSECONDARYCOLOR3FPROC>("glSecondaryColor3f");
   const auto secondary_pointer = proc<PFNGLSECONDARYCOLORPOINTERPROC>("glSecondaryColorPointer");
   clear_frame(0.0f, 0.0f, 0.0f);

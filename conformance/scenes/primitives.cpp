@@ -65,8 +65,7 @@ PINEDA_SCENE(mode_points, "GL_POINTS size 1 at fractional positions; smooth and 
     for (int y = 2; y < p.h - 2; y += 3) {
       for (int x = 2; x < p.w - 2; x += 3, ++n) {
         palette_color(rng.below(16));
-        glVertex2f(static_cast<float>(x) + offsets[n % 5],
-                   static_cast<float>(y) + offsets[(n / 5) % 5]);
+        glVertex2f(static_cast<float>(x) + offsets[n % 5], static_cast<float>(y) + offsets[(n / 5) % 5]);
       }
     }
     glEnd();
@@ -81,8 +80,8 @@ PINEDA_SCENE(mode_lines, "GL_LINES of every slope with per-vertex colours; smoot
     for (int i = 0; i < 48; ++i) {
       const float x0 = rng.range(4.0f, p.w - 4.0f), y0 = rng.range(4.0f, p.h - 4.0f);
       float x1 = rng.range(4.0f, p.w - 4.0f), y1 = rng.range(4.0f, p.h - 4.0f);
-      if (i % 8 == 0) y1 = y0 + 0.25f; // nearly horizontal
-      if (i % 8 == 1) x1 = x0 + 0.25f; // nearly vertical
+      if (i % 8 == 0) y1 = y0 + 0.25f;  // nearly horizontal
+      if (i % 8 == 1) x1 = x0 + 0.25f;  // nearly vertical
       palette_color(2 * i);
       glVertex2f(x0, y0);
       palette_color(2 * i + 5);
@@ -114,14 +113,12 @@ PINEDA_SCENE(mode_line_loop, "GL_LINE_LOOP star polygons; the closing segment us
     const int points[4] = {5, 7, 9, 3};
     const int steps[4] = {2, 3, 4, 1};
     for (int s = 0; s < 4; ++s) {
-      const float cx = p.w * 0.5f + 0.3f,
-                  cy = p.h * (0.125f + 0.25f * static_cast<float>(s)) + 0.2f;
+      const float cx = p.w * 0.5f + 0.3f, cy = p.h * (0.125f + 0.25f * static_cast<float>(s)) + 0.2f;
       const float r = std::fmin(p.w * 0.45f, p.h * 0.12f);
       glBegin(GL_LINE_LOOP);
       for (int i = 0; i < points[s]; ++i) {
         const float a = 2.0f * kPi * static_cast<float>((i * steps[s]) % points[s]) /
-                            static_cast<float>(points[s]) +
-                        0.1f;
+                        static_cast<float>(points[s]) + 0.1f;
         palette_color(3 * s + i);
         glVertex2f(cx + r * std::cos(a), cy + r * std::sin(a));
       }
@@ -186,8 +183,7 @@ PINEDA_SCENE(mode_triangle_fan, "GL_TRIANGLE_FAN discs and a partial fan; flat u
   });
 }
 
-PINEDA_SCENE(mode_quads,
-             "GL_QUADS convex jittered cells with affine colours; flat uses vertex 4i") {
+PINEDA_SCENE(mode_quads, "GL_QUADS convex jittered cells with affine colours; flat uses vertex 4i") {
   smooth_and_flat(frame, [](const Panel& p) {
     Rng rng(71);
     const int cols = 4, rows = 8;
@@ -200,8 +196,7 @@ PINEDA_SCENE(mode_quads,
                                     {x0 + cw - rng.range(0, 5), y0 + rng.range(0, 5)},
                                     {x0 + cw - rng.range(0, 5), y0 + ch - rng.range(0, 5)},
                                     {x0 + rng.range(0, 5), y0 + ch - rng.range(0, 5)}};
-        const AffineColor colour =
-            random_affine(rng, x0 + cw * 0.5f, y0 + ch * 0.5f, cw * 0.5f, ch * 0.5f);
+        const AffineColor colour = random_affine(rng, x0 + cw * 0.5f, y0 + ch * 0.5f, cw * 0.5f, ch * 0.5f);
         // Alternate windings: the quads' orientation must not matter without culling.
         for (int v = 0; v < 4; ++v) {
           const int k = (r + c) % 2 ? v : 3 - v;
@@ -220,8 +215,7 @@ PINEDA_SCENE(mode_quad_strip, "GL_QUAD_STRIP bands with affine colours; flat use
     for (int s = 0; s < 3; ++s) {
       const float y = p.h * (0.05f + 0.32f * static_cast<float>(s));
       // One affine colour field per strip, so every quad of it is triangulation-independent.
-      const AffineColor colour =
-          random_affine(rng, p.w * 0.5f, y + 38.0f, p.w * 0.5f + 6.0f, 40.0f);
+      const AffineColor colour = random_affine(rng, p.w * 0.5f, y + 38.0f, p.w * 0.5f + 6.0f, 40.0f);
       glBegin(GL_QUAD_STRIP);
       for (int i = 0; i < 10; ++i) {
         const float x = 4.0f + static_cast<float>(i) * (p.w - 8.0f) / 9.0f;
@@ -258,12 +252,10 @@ PINEDA_SCENE(mode_polygon, "GL_POLYGON convex 3..10-gons with affine colours; fl
   });
 }
 
-PINEDA_SCENE(quad_split_colors,
-             "Non-affine colours on quads, quad strips and polygons: llvmpipe "
+PINEDA_SCENE(quad_split_colors, "Non-affine colours on quads, quad strips and polygons: llvmpipe "
              "splits each as a fan from its first vertex",
-             .why =
-                 "GL allows any split (GL 2.1 §3.5.1); llvmpipe is the reference, softpipe splits "
-                 "GL_QUADS along the v1-v3 diagonal instead, hence the llvmpipe vs softpipe gap") {
+             .why = "GL allows any split (GL 2.1 §3.5.1); llvmpipe is the reference, softpipe splits "
+                    "GL_QUADS along the v1-v3 diagonal instead, hence the llvmpipe vs softpipe gap") {
   // GL leaves the interpolation across polygons of more than three vertices open
   // (GL 2.1 §3.5.1: any convex combination). llvmpipe, the reference, triangulates GL_QUADS,
   // GL_QUAD_STRIP (in polygon order 2i, 2i+1, 2i+3, 2i+2) and GL_POLYGON as a fan from the
@@ -276,15 +268,11 @@ PINEDA_SCENE(quad_split_colors,
     const int hot = p % 4;
     auto colour = [hot](int v) {
       const float* c = palette(3 * hot + 1);
-      if (v == hot)
-        glColor3f(c[0], c[1], c[2]);
-      else
-        glColor3f(0.125f, 0.125f, 0.25f);
+      if (v == hot) glColor3f(c[0], c[1], c[2]);
+      else glColor3f(0.125f, 0.125f, 0.25f);
     };
-    const float quad[4][2] = {{0.08f * w, 0.1f * h},
-                              {0.9f * w, 0.06f * h},
-                              {0.94f * w, 0.88f * h},
-                              {0.12f * w, 0.95f * h}};
+    const float quad[4][2] = {{0.08f * w, 0.1f * h}, {0.9f * w, 0.06f * h},
+                              {0.94f * w, 0.88f * h}, {0.12f * w, 0.95f * h}};
     if (p < 4) {
       glBegin(GL_QUADS);
       for (int v = 0; v < 4; ++v) {

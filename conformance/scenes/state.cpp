@@ -29,10 +29,8 @@ void mixed_facing_geometry(float w, float h) {
   glBegin(GL_QUADS);
   for (int i = 0; i < 6; ++i) {
     const float x = 0.06f * w + 0.15f * w * static_cast<float>(i);
-    const float corners[4][2] = {{x, 0.36f * h},
-                                 {x + 0.12f * w, 0.38f * h},
-                                 {x + 0.14f * w, 0.56f * h},
-                                 {x + 0.02f * w, 0.55f * h}};
+    const float corners[4][2] = {{x, 0.36f * h}, {x + 0.12f * w, 0.38f * h},
+                                 {x + 0.14f * w, 0.56f * h}, {x + 0.02f * w, 0.55f * h}};
     // One colour per quad: smooth colours that are not affine would depend on how the quad is
     // split into triangles, which is not what this geometry tests.
     palette_color(i);
@@ -48,16 +46,14 @@ void mixed_facing_geometry(float w, float h) {
   const float angles[7] = {0.0f, 1.0f, 2.2f, 1.6f, 3.3f, 4.4f, 3.9f};
   for (int i = 0; i < 7; ++i) {
     palette_color(i + 8);
-    glVertex2f(0.5f * w + 0.42f * w * std::cos(angles[i]),
-               0.17f * h + 0.14f * h * std::sin(angles[i]));
+    glVertex2f(0.5f * w + 0.42f * w * std::cos(angles[i]), 0.17f * h + 0.14f * h * std::sin(angles[i]));
   }
   glEnd();
 }
 
 } // namespace
 
-PINEDA_SCENE(cull_modes,
-             "glCullFace BACK/FRONT/FRONT_AND_BACK x glFrontFace CCW/CW, plus a mirror") {
+PINEDA_SCENE(cull_modes, "glCullFace BACK/FRONT/FRONT_AND_BACK x glFrontFace CCW/CW, plus a mirror") {
   clear_frame(0.0f, 0.0f, 0.0f);
   const GLenum modes[4] = {0, GL_BACK, GL_FRONT, GL_FRONT_AND_BACK};
   for (int p = 0; p < 8; ++p) {
@@ -85,8 +81,7 @@ PINEDA_SCENE(cull_modes,
     // Points are never culled (culling applies to polygons only).
     glBegin(GL_POINTS);
     glColor3f(1.0f, 1.0f, 1.0f);
-    for (int i = 0; i < 8; ++i)
-      glVertex2f(4.5f + 6.0f * i, std::floor(0.5f * h) + 0.25f);
+    for (int i = 0; i < 8; ++i) glVertex2f(4.5f + 6.0f * i, std::floor(0.5f * h) + 0.25f);
     glEnd();
   }
   glDisable(GL_CULL_FACE);
@@ -118,9 +113,9 @@ PINEDA_SCENE(color_mask, "glColorMask per channel on drawing and on glClear (alp
   glColorMask(GL_TRUE, GL_FALSE, GL_TRUE, GL_FALSE);
   glClearColor(0.625f, 0.0f, 0.375f, 0.0f);
   glClear(GL_COLOR_BUFFER_BIT);
-  const GLboolean masks[9][4] = {{1, 0, 0, 0}, {0, 1, 0, 0}, {0, 0, 1, 0},
-                                 {0, 0, 0, 1}, {1, 1, 0, 0}, {0, 1, 1, 1},
-                                 {1, 0, 1, 0}, {0, 0, 0, 0}, {1, 1, 1, 1}};
+  const GLboolean masks[9][4] = {{1, 0, 0, 0}, {0, 1, 0, 0}, {0, 0, 1, 0}, {0, 0, 0, 1},
+                                 {1, 1, 0, 0}, {0, 1, 1, 1}, {1, 0, 1, 0}, {0, 0, 0, 0},
+                                 {1, 1, 1, 1}};
   for (int p = 0; p < 9; ++p) {
     const Panel pn = panel(frame, p, 3, 3, 6);
     glColorMask(masks[p][0], masks[p][1], masks[p][2], masks[p][3]);
@@ -163,8 +158,7 @@ PINEDA_SCENE(blend_additive, "glBlendFunc(GL_ONE, GL_ONE): overlapping discs sat
   }
 }
 
-PINEDA_SCENE(blend_alpha,
-             "glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA) layers over a checkerboard") {
+PINEDA_SCENE(blend_alpha, "glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA) layers over a checkerboard") {
   clear_frame(0.0f, 0.0f, 0.0f, 1.0f);
   for (int y = 0; y < 8; ++y) {
     for (int x = 0; x < 8; ++x) {

@@ -19,8 +19,7 @@ void perspective(double half_w, double half_h, double near_plane, double far_pla
 
 } // namespace
 
-PINEDA_SCENE(stress_watertight,
-             "Shared-edge meshes added at 0.25: any pixel hit twice or missed shows") {
+PINEDA_SCENE(stress_watertight, "Shared-edge meshes added at 0.25: any pixel hit twice or missed shows") {
   clear_frame(0.0f, 0.0f, 0.0f, 0.0f);
   glEnable(GL_BLEND);
   glBlendFunc(GL_ONE, GL_ONE);
@@ -33,7 +32,7 @@ PINEDA_SCENE(stress_watertight,
   std::vector<float> xs((n + 1) * (n + 1)), ys((n + 1) * (n + 1));
   for (int j = 0; j <= n; ++j) {
     for (int i = 0; i <= n; ++i) {
-      const bool inner_x = i > 0 && i<n, inner_y = j> 0 && j < n;
+      const bool inner_x = i > 0 && i < n, inner_y = j > 0 && j < n;
       xs[j * (n + 1) + i] = 4.0f + 160.0f * i / n + (inner_x ? rng.range(-1.0f, 1.0f) : 0.0f);
       ys[j * (n + 1) + i] = 4.0f + 248.0f * j / n + (inner_y ? rng.range(-1.6f, 1.6f) : 0.0f);
     }
@@ -44,8 +43,7 @@ PINEDA_SCENE(stress_watertight,
       const int a = j * (n + 1) + i, b = a + 1, c = a + n + 1, d = c + 1;
       const int tris[2][3] = {{a, b, (i + j) % 2 ? c : d}, {(i + j) % 2 ? b : a, d, c}};
       for (const auto& t : tris)
-        for (int k : t)
-          glVertex2f(xs[k], ys[k]);
+        for (int k : t) glVertex2f(xs[k], ys[k]);
     }
   }
   glEnd();
@@ -71,8 +69,7 @@ PINEDA_SCENE(stress_watertight,
   glDisable(GL_BLEND);
 }
 
-PINEDA_SCENE(stress_slivers,
-             "Long slivers 0.001-2 px wide at every angle, and sliver pairs added at 0.25") {
+PINEDA_SCENE(stress_slivers, "Long slivers 0.001-2 px wide at every angle, and sliver pairs added at 0.25") {
   clear_frame(0.0f, 0.0f, 0.0f, 0.0f);
   Rng rng(1101);
   glBegin(GL_TRIANGLES);
@@ -108,22 +105,19 @@ PINEDA_SCENE(stress_slivers,
   glDisable(GL_BLEND);
 }
 
-PINEDA_SCENE(stress_tiny_triangles,
-             "30000 sub-pixel triangles: most cover no pixel centre, some one") {
+PINEDA_SCENE(stress_tiny_triangles, "30000 sub-pixel triangles: most cover no pixel centre, some one") {
   clear_frame(0.0f, 0.0f, 0.0f);
   Rng rng(1201);
   glBegin(GL_TRIANGLES);
   for (int t = 0; t < 30000; ++t) {
     const float cx = rng.range(2.0f, 254.0f), cy = rng.range(2.0f, 254.0f);
     palette_color(t);
-    for (int k = 0; k < 3; ++k)
-      glVertex2f(cx + rng.range(-0.7f, 0.7f), cy + rng.range(-0.7f, 0.7f));
+    for (int k = 0; k < 3; ++k) glVertex2f(cx + rng.range(-0.7f, 0.7f), cy + rng.range(-0.7f, 0.7f));
   }
   glEnd();
 }
 
-PINEDA_SCENE(stress_huge_coords,
-             "Perspective geometry with vertices at +-1e7: floor to the horizon, rays") {
+PINEDA_SCENE(stress_huge_coords, "Perspective geometry with vertices at +-1e7: floor to the horizon, rays") {
   clear_frame(0.0f, 0.0f, 0.125f);
   perspective(0.8, 0.8, 1.0, 1e8);
   const float big = 1e7f;
@@ -157,8 +151,7 @@ PINEDA_SCENE(stress_huge_coords,
   glEnd();
 }
 
-PINEDA_SCENE(stress_behind_eye,
-             "Triangles crossing w = 0 (behind the eye), and glVertex4 with w < 0") {
+PINEDA_SCENE(stress_behind_eye, "Triangles crossing w = 0 (behind the eye), and glVertex4 with w < 0") {
   clear_frame(0.0f, 0.0f, 0.0f);
   perspective(0.5, 0.5, 0.1, 100.0);
   glEnable(GL_DEPTH_TEST);
@@ -207,8 +200,7 @@ PINEDA_SCENE(stress_behind_eye,
   glEnd();
 }
 
-PINEDA_SCENE(stress_near_far,
-             "glFrustum near 1e-3, far 1e6 (ratio 1e9): close depth layers at 0.01..300") {
+PINEDA_SCENE(stress_near_far, "glFrustum near 1e-3, far 1e6 (ratio 1e9): close depth layers at 0.01..300") {
   clear_frame(0.0f, 0.0f, 0.0f);
   perspective(1e-3, 1e-3, 1e-3, 1e6);
   glEnable(GL_DEPTH_TEST);
@@ -224,10 +216,8 @@ PINEDA_SCENE(stress_near_far,
       const bool is_far = (order == 0) == far_first;
       const double z = is_far ? d * 1.12 : d;
       const double half = 0.28 * z, shift = (is_far ? 0.07 : -0.07) * z;
-      if (is_far)
-        glColor3f(0.375f, 0.375f, 0.375f);
-      else
-        palette_color(i);
+      if (is_far) glColor3f(0.375f, 0.375f, 0.375f);
+      else palette_color(i);
       glBegin(GL_QUADS);
       glVertex3d(sx * z - half + shift, sy * z - half + shift, -z);
       glVertex3d(sx * z + half + shift, sy * z - half + shift, -z);
@@ -238,8 +228,7 @@ PINEDA_SCENE(stress_near_far,
   }
 }
 
-PINEDA_SCENE(stress_huge_triangles,
-             "Triangles with window coordinates up to 1e6 px around a 256 px window") {
+PINEDA_SCENE(stress_huge_triangles, "Triangles with window coordinates up to 1e6 px around a 256 px window") {
   clear_frame(0.0f, 0.0f, 0.0f);
   // Pixel projection: vertices hundreds of thousands of pixels outside the window, edges crossing
   // it at chosen places (GL 2.1 §2.12 clipping; implementations may use a guard band).
@@ -270,8 +259,7 @@ PINEDA_SCENE(stress_huge_triangles,
   glEnd();
 }
 
-PINEDA_SCENE(stress_many_triangles,
-             "A 65536-triangle torus from glDrawElements, depth-tested and culled") {
+PINEDA_SCENE(stress_many_triangles, "A 65536-triangle torus from glDrawElements, depth-tested and culled") {
   clear_frame(0.0f, 0.0f, 0.0f);
   perspective(0.6, 0.6, 1.0, 20.0);
   glTranslatef(0.0f, 0.0f, -4.2f);
@@ -286,9 +274,8 @@ PINEDA_SCENE(stress_many_triangles,
       const float u = 2.0f * kPi * i / nu, v = 2.0f * kPi * j / nv;
       const float r = 1.4f + 0.55f * std::cos(v);
       pos.insert(pos.end(), {r * std::cos(u), r * std::sin(u), 0.55f * std::sin(v)});
-      col.insert(col.end(),
-                 {GLubyte(128 + 127 * std::cos(3.0f * u)), GLubyte(128 + 127 * std::sin(v)),
-                  GLubyte(128 + 127 * std::cos(u + v))});
+      col.insert(col.end(), {GLubyte(128 + 127 * std::cos(3.0f * u)), GLubyte(128 + 127 * std::sin(v)),
+                             GLubyte(128 + 127 * std::cos(u + v))});
     }
   }
   std::vector<GLuint> idx;
@@ -307,8 +294,7 @@ PINEDA_SCENE(stress_many_triangles,
   glDisableClientState(GL_COLOR_ARRAY);
 }
 
-PINEDA_SCENE(stress_fillrate,
-             "64 full-window layers: 32 blended back to front, 32 depth-rejected") {
+PINEDA_SCENE(stress_fillrate, "64 full-window layers: 32 blended back to front, 32 depth-rejected") {
   clear_frame(0.0f, 0.0f, 0.0f);
   glEnable(GL_DEPTH_TEST);
   glEnable(GL_BLEND);

@@ -18,8 +18,7 @@ void cube() {
   glBegin(GL_QUADS);
   for (int f = 0; f < 6; ++f) {
     palette_color(f * 2 + 1);
-    for (int k = 0; k < 4; ++k)
-      glVertex3fv(c[faces[f][k]]);
+    for (int k = 0; k < 4; ++k) glVertex3fv(c[faces[f][k]]);
   }
   glEnd();
 }
@@ -50,22 +49,19 @@ void branch(int depth) {
 // A sheared, rotated, translated matrix with a projective bottom row, column-major as GL wants.
 void reference_matrix(GLdouble m[16], float w, float h) {
   const double a = 0.4, s = std::sin(a), c = std::cos(a);
-  const double cols[16] = {0.9 * c, 0.9 * s, 0.0, 0.004, -0.7 * s + 0.2, 0.7 * c,  0.0, 0.002,
-                           0.0,     0.0,     1.0, 0.0,   0.5 * w,        0.45 * h, 0.0, 1.0};
-  for (int i = 0; i < 16; ++i)
-    m[i] = cols[i];
+  const double cols[16] = {0.9 * c, 0.9 * s, 0.0, 0.004, -0.7 * s + 0.2, 0.7 * c, 0.0, 0.002,
+                           0.0,     0.0,     1.0, 0.0,   0.5 * w,       0.45 * h, 0.0, 1.0};
+  for (int i = 0; i < 16; ++i) m[i] = cols[i];
 }
 
 void transpose(const GLdouble in[16], GLdouble out[16]) {
   for (int r = 0; r < 4; ++r)
-    for (int col = 0; col < 4; ++col)
-      out[r * 4 + col] = in[col * 4 + r];
+    for (int col = 0; col < 4; ++col) out[r * 4 + col] = in[col * 4 + r];
 }
 
 } // namespace
 
-PINEDA_SCENE(matrix_stack,
-             "Nested glPush/PopMatrix tree on the modelview stack; projection stack switch") {
+PINEDA_SCENE(matrix_stack, "Nested glPush/PopMatrix tree on the modelview stack; projection stack switch") {
   clear_frame(0.0f, 0.0f, 0.0f);
   glPushMatrix();
   glTranslatef(80.2f, 6.3f, 0.0f);
@@ -95,8 +91,7 @@ PINEDA_SCENE(matrix_stack,
   glRectf(190.25f, 8.25f, 248.25f, 20.25f);
 }
 
-PINEDA_SCENE(matrix_load_mult, "The same projective matrix by glLoad/Mult[Transpose]Matrix{f,d} "
-                               "and glRotate/Translate/Scale") {
+PINEDA_SCENE(matrix_load_mult, "The same projective matrix by glLoad/Mult[Transpose]Matrix{f,d} and glRotate/Translate/Scale") {
   clear_frame(0.0f, 0.0f, 0.0f);
   // Mesa's gl.h declares the GL 1.3 prototypes itself, so glext.h has no PFN types for them.
   using MatrixF = void(APIENTRY*)(const GLfloat*);
@@ -118,36 +113,14 @@ PINEDA_SCENE(matrix_load_mult, "The same projective matrix by glLoad/Mult[Transp
     }
     // Every panel ends with modelview = reference matrix (panel 8: without the projective row).
     switch (p) {
-    case 0:
-      glLoadMatrixf(mf);
-      break;
-    case 1:
-      glLoadMatrixd(md);
-      break;
-    case 2:
-      glLoadIdentity();
-      glMultMatrixf(mf);
-      break;
-    case 3:
-      glTranslatef(5.0f, 0.0f, 0.0f);
-      glTranslatef(-5.0f, 0.0f, 0.0f);
-      glMultMatrixd(md);
-      break;
-    case 4:
-      load_tf(mtf);
-      break;
-    case 5:
-      load_td(mt);
-      break;
-    case 6:
-      glScalef(2.0f, 2.0f, 1.0f);
-      glScalef(0.5f, 0.5f, 1.0f);
-      mult_tf(mtf);
-      break;
-    case 7:
-      glLoadIdentity();
-      mult_td(mt);
-      break;
+    case 0: glLoadMatrixf(mf); break;
+    case 1: glLoadMatrixd(md); break;
+    case 2: glLoadIdentity(); glMultMatrixf(mf); break;
+    case 3: glTranslatef(5.0f, 0.0f, 0.0f); glTranslatef(-5.0f, 0.0f, 0.0f); glMultMatrixd(md); break;
+    case 4: load_tf(mtf); break;
+    case 5: load_td(mt); break;
+    case 6: glScalef(2.0f, 2.0f, 1.0f); glScalef(0.5f, 0.5f, 1.0f); mult_tf(mtf); break;
+    case 7: glLoadIdentity(); mult_td(mt); break;
     default:
       glTranslatef(0.5f * w, 0.45f * h, 0.0f);
       glRotatef(0.4f * 180.0f / kPi, 0.0f, 0.0f, 1.0f);
@@ -168,8 +141,7 @@ PINEDA_SCENE(matrix_load_mult, "The same projective matrix by glLoad/Mult[Transp
   }
 }
 
-PINEDA_SCENE(projection_variants,
-             "Off-centre glFrustum, mirrored and anisotropic glOrtho, wide frustum") {
+PINEDA_SCENE(projection_variants, "Off-centre glFrustum, mirrored and anisotropic glOrtho, wide frustum") {
   clear_frame(0.0f, 0.0f, 0.0f);
   glEnable(GL_DEPTH_TEST);
   for (int p = 0; p < 4; ++p) {
@@ -177,18 +149,10 @@ PINEDA_SCENE(projection_variants,
     glMatrixMode(GL_PROJECTION);
     glLoadIdentity();
     switch (p) {
-    case 0:
-      glFrustum(-0.2, 1.0, -0.7, 0.4, 1.0, 10.0);
-      break; // off-centre
-    case 1:
-      glOrtho(3.0, -3.0, -3.0, 3.0, -10.0, 10.0);
-      break; // left > right: mirrored
-    case 2:
-      glOrtho(-5.0, 5.0, -2.0, 2.0, -10.0, 10.0);
-      break; // squashed
-    default:
-      glFrustum(-3.0, 3.0, -3.0, 3.0, 0.5, 100.0);
-      break; // very wide angle
+    case 0: glFrustum(-0.2, 1.0, -0.7, 0.4, 1.0, 10.0); break;   // off-centre
+    case 1: glOrtho(3.0, -3.0, -3.0, 3.0, -10.0, 10.0); break;   // left > right: mirrored
+    case 2: glOrtho(-5.0, 5.0, -2.0, 2.0, -10.0, 10.0); break;   // squashed
+    default: glFrustum(-3.0, 3.0, -3.0, 3.0, 0.5, 100.0); break; // very wide angle
     }
     glMatrixMode(GL_MODELVIEW);
     glLoadIdentity();
@@ -201,8 +165,7 @@ PINEDA_SCENE(projection_variants,
   }
 }
 
-PINEDA_SCENE(viewport_nonsquare,
-             "A 320x200 window with non-square viewports stretching the same NDC picture",
+PINEDA_SCENE(viewport_nonsquare, "A 320x200 window with non-square viewports stretching the same NDC picture",
              .width = 320, .height = 200) {
   clear_frame(0.125f, 0.125f, 0.125f);
   const int vps[3][4] = {{8, 70, 200, 122}, {214, 8, 98, 184}, {8, 8, 200, 56}};
@@ -280,8 +243,7 @@ PINEDA_SCENE(viewport_tiles, "64 viewports of 32x32 pixels, each with its own ro
   }
 }
 
-PINEDA_SCENE(perspective_color,
-             "Perspective-correct colour on a big receding quad and a striped floor") {
+PINEDA_SCENE(perspective_color, "Perspective-correct colour on a big receding quad and a striped floor") {
   clear_frame(0.0f, 0.0f, 0.25f);
   glMatrixMode(GL_PROJECTION);
   glLoadIdentity();
