@@ -192,8 +192,8 @@ struct AttribFrame {
   } hints{};
   bool color_sum = false; // fog: the COLOR_SUM enable (Table 6.11)
   GLenum read_buffer = GL_FRONT; // pixel (Table 6.27)
-  TexPipeAttrib texpipe; // texture environment/generation/enables, fog (src/state/texenv.cpp)
   TextureAttrib texture_objects{}; // texture: bindings, object parameters (texture_object.cpp)
+  TexPipeAttrib texpipe; // texture environment/generation/enables, fog (src/state/texenv.cpp)
 };
 
 struct Context {

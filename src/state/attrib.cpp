@@ -9,13 +9,12 @@
 //   POLYGON_BIT also: polygon smooth and stipple enables, polygon offset factor, units and
 //     enables (Table 6.14). POLYGON_STIPPLE_BIT: the stipple pattern.
 //   PIXEL_MODE_BIT also: pixel transfer scales and biases, maps, zoom (Tables 6.23-6.27).
+//   TEXTURE_BIT: bindings and texture object parameters (Tables 6.16-6.18); the environment,
+//     coordinate generation, enables and active unit are saved by texenv.cpp.
 //   LIST_BIT: the display-list base. EVAL_BIT: evaluator maps, grid and enables (Table 6.28).
 //   ACCUM_BUFFER_BIT: the accumulation clear value. MULTISAMPLE_BIT: multisample enables and
 //   sample coverage (Table 6.15). COLOR_BUFFER_BIT, CURRENT_BIT also: index clear value and
 //   write mask, current index and raster position once colour index and raster position exist.
-// TEXTURE_BIT is saved in two parts: bindings and object parameters (texture_object.cpp), and
-// the active unit, environments, coordinate generation and enables (texenv.cpp), which also
-// covers the texture and generation enables of ENABLE_BIT, FOG_BIT and the fog coordinate.
 #include "core/api_util.h"
 #include "dispatch.h"
 
@@ -140,8 +139,8 @@ void save(const Context* c, AttribFrame& f) {
   }
   if (m & GL_FOG_BIT) f.color_sum = c->lighting.color_sum;
   if (m & GL_PIXEL_MODE_BIT) f.read_buffer = c->read_buffer;
-  texpipe_save_attrib(c, m, f.texpipe);
   if (m & GL_TEXTURE_BIT) save_texture_attrib(c, f.texture_objects);
+  texpipe_save_attrib(c, m, f.texpipe);
 }
 
 // Restore the groups of `f` and return the derived state they invalidate.
@@ -264,8 +263,8 @@ uint32_t restore(Context* c, const AttribFrame& f) {
     dirty |= kDirtyLighting;
   }
   if (m & GL_PIXEL_MODE_BIT) c->read_buffer = f.read_buffer;
-  dirty |= texpipe_restore_attrib(c, m, f.texpipe);
   if (m & GL_TEXTURE_BIT) restore_texture_attrib(c, f.texture_objects); // marks kDirtyTexture
+  dirty |= texpipe_restore_attrib(c, m, f.texpipe);
   // GL 2.1 §2.14.3: while COLOR_MATERIAL is enabled the tracked material properties follow
   // the current colour, whichever of the two was restored.
   if ((m & (GL_CURRENT_BIT | GL_LIGHTING_BIT | GL_ENABLE_BIT)) && c->lighting.color_material) {
