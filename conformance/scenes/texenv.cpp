@@ -59,11 +59,9 @@ GLuint gradient_texture(GLenum filter = GL_LINEAR) {
   });
 }
 
-// Normal map of a bumpy surface, encoded as 0.5 + 0.5 n (the DOT3 convention). NEAREST: DOT3
-// multiplies differences by four, and llvmpipe's LINEAR filter of 8-bit texels rounds at 8
-// bits, which the scene is not about.
+// Normal map of a bumpy surface, encoded as 0.5 + 0.5 n (the DOT3 convention).
 GLuint normal_texture() {
-  return make_texture(32, 32, GL_NEAREST, [](float s, float t, float* c) {
+  return make_texture(32, 32, GL_LINEAR, [](float s, float t, float* c) {
     const float dx = 0.6f * std::cos(6.2831853f * 3.0f * s);
     const float dy = 0.6f * std::cos(6.2831853f * 2.0f * t);
     const float len = std::sqrt(dx * dx + dy * dy + 1.0f);
@@ -197,8 +195,7 @@ PINEDA_SCENE(texenv_combine, "COMBINE: REPLACE, MODULATE, ADD, ADD_SIGNED, INTER
                              "with sources and operands") {
   const Gl13 gl;
   clear_frame(0.0f, 0.0f, 0.0f);
-  // NEAREST: RGB_SCALE and ALPHA_SCALE amplify the 8-bit rounding of llvmpipe's LINEAR filter.
-  const GLuint t0 = gradient_texture(GL_NEAREST), t1 = checker_texture();
+  const GLuint t0 = gradient_texture(), t1 = checker_texture();
   const GLfloat env[4] = {0.25f, 0.625f, 0.875f, 0.375f};
   const GLenum funcs[6] = {GL_REPLACE,    GL_MODULATE,    GL_ADD,
                            GL_ADD_SIGNED, GL_INTERPOLATE, GL_SUBTRACT};

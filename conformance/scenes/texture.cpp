@@ -293,9 +293,7 @@ PINEDA_SCENE(tex_1d_3d, "1D texture with a texture matrix and a 3D texture slice
   glEnable(GL_TEXTURE_3D);
   for (int i = 1; i < 4; ++i) {
     panel(frame, i, 2, 2);
-    // NEAREST: the scene checks r's interpolation; LINEAR 3D filtering rounds differently
-    // from llvmpipe's 8-bit filter by up to 3 (a sampler matter, noted for texcore).
-    const GLenum filter = GL_NEAREST;
+    const GLenum filter = i == 1 ? GL_NEAREST : GL_LINEAR;
     glTexParameteri(GL_TEXTURE_3D, GL_TEXTURE_MIN_FILTER, filter);
     glTexParameteri(GL_TEXTURE_3D, GL_TEXTURE_MAG_FILTER, filter);
     const float r = 0.3f * static_cast<float>(i) - 0.0863f; // slice boundaries off pixel centres
@@ -341,6 +339,69 @@ PINEDA_SCENE(tex_lines_points, "Textured lines and points (MODULATE, NEAREST and
       glVertex2f(4.5f + 2.0f * x, 4.5f + 2.0f * y);
     }
   glEnd();
+  glDeleteTextures(1, &tex);
+  texture_defaults();
+}
+
+PINEDA_SCENE(tex_color_sum, "Colour sum after texturing: SEPARATE_SPECULAR_COLOR on a lit textured "
+                            "sphere, COLOR_SUM on quads") {
+  const auto secondary = proc<PFNGLSECONDARYCOLOR3FPROC>("glSecondaryColor3f");
+  clear_frame(0.0f, 0.0f, 0.0f);
+  const GLuint tex = make_texture_2d(32, 32, 9, GL_LINEAR, GL_LINEAR);
+  glEnable(GL_TEXTURE_2D);
+  glTexEnvi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_MODULATE);
+  // Left: COLOR_SUM with per-vertex secondary colours, unlit.
+  panel(frame, 0, 2, 1);
+  glEnable(GL_COLOR_SUM);
+  glBegin(GL_QUADS);
+  const float xs[4] = {4, 120, 120, 4}, ys[4] = {8, 8, 240, 240};
+  for (int v = 0; v < 4; ++v) {
+    palette_color(v + 2);
+    secondary(0.125f * v, 0.5f - 0.125f * v, 0.25f);
+    glTexCoord2f(xs[v] / 61.3f, ys[v] / 97.1f);
+    glVertex2f(xs[v], ys[v]);
+  }
+  glEnd();
+  glDisable(GL_COLOR_SUM);
+  // Right: lighting with the specular colour added after the texture environment.
+  const Panel p = panel(frame, 1, 2, 1);
+  glMatrixMode(GL_PROJECTION);
+  glLoadIdentity();
+  const double aspect = static_cast<double>(p.w) / p.h;
+  glFrustum(-0.5 * aspect, 0.5 * aspect, -0.5, 0.5, 1.0, 10.0);
+  glMatrixMode(GL_MODELVIEW);
+  glLoadIdentity();
+  glEnable(GL_DEPTH_TEST);
+  glEnable(GL_LIGHTING);
+  glEnable(GL_LIGHT0);
+  const GLfloat pos[4] = {-0.5f, 0.8f, 1.0f, 0.0f}, white[4] = {1, 1, 1, 1};
+  glLightfv(GL_LIGHT0, GL_POSITION, pos);
+  glMaterialfv(GL_FRONT, GL_SPECULAR, white);
+  glMaterialf(GL_FRONT, GL_SHININESS, 20.0f);
+  glLightModeli(GL_LIGHT_MODEL_COLOR_CONTROL, GL_SEPARATE_SPECULAR_COLOR);
+  glTranslatef(0, 0, -3.5f);
+  glRotatef(20, 1, 0, 0);
+  const int slices = 32, stacks = 20;
+  for (int i = 0; i < stacks; ++i) {
+    const float t0 = kPi * i / stacks, t1 = kPi * (i + 1) / stacks;
+    glBegin(GL_TRIANGLE_STRIP);
+    for (int j = 0; j <= slices; ++j) {
+      const float ph = 2.0f * kPi * j / slices;
+      for (float t : {t1, t0}) {
+        const float x = std::sin(t) * std::cos(ph), y = std::cos(t), z = std::sin(t) * std::sin(ph);
+        glNormal3f(x, y, z);
+        glTexCoord2f(2.0f * j / slices + 0.013f, t / kPi + 0.011f);
+        glVertex3f(x, y, z);
+      }
+    }
+    glEnd();
+  }
+  glLightModeli(GL_LIGHT_MODEL_COLOR_CONTROL, GL_SINGLE_COLOR);
+  const GLfloat black[4] = {0, 0, 0, 1};
+  glMaterialfv(GL_FRONT, GL_SPECULAR, black);
+  glMaterialf(GL_FRONT, GL_SHININESS, 0.0f);
+  glDisable(GL_LIGHT0);
+  glDisable(GL_LIGHTING);
   glDeleteTextures(1, &tex);
   texture_defaults();
 }

@@ -79,10 +79,10 @@ inline float combine(GLenum f, float a0, float a1, float a2) {
   }
 }
 
-} // namespace
-
-void apply_tex_env(const ShadeUnit& u, TexBase base, const float cp[4], const float cf[4],
-                   const float (*tex)[4], const int* slot_of_unit, const float cs[4], float cv[4]) {
+// The texture environment of one fragment; inlined into shade_block's fragment loop.
+inline void tex_env(const ShadeUnit& u, TexBase base, const float cp[4], const float cf[4],
+                    const float (*tex)[4], const int* slot_of_unit, const float cs[4],
+                    float cv[4]) {
   // The sampler expands the texel by Table 3.23 (ALPHA -> (0,0,0,A), LUMINANCE -> (L,L,L,1),
   // INTENSITY -> (I,I,I,I), RGB -> (R,G,B,1)); which components the base format really has
   // still decides between the rows of Table 3.22.
@@ -165,6 +165,13 @@ void apply_tex_env(const ShadeUnit& u, TexBase base, const float cp[4], const fl
   }
   for (int k = 0; k < 4; ++k)
     cv[k] = clamp01(cv[k]);
+}
+
+} // namespace
+
+void apply_tex_env(const ShadeUnit& u, TexBase base, const float cp[4], const float cf[4],
+                   const float (*tex)[4], const int* slot_of_unit, const float cs[4], float cv[4]) {
+  tex_env(u, base, cp, cf, tex, slot_of_unit, cs, cv);
 }
 
 float fog_factor(const ShadeSetup& ss, float c) {
@@ -320,7 +327,7 @@ void shade_block(const FragCtx& ctx, const FragInputs& in, int bx, int by, uint6
           tf[k][ch] = tex[k][f][ch];
       for (int k = 0; k < ss.unit_count; ++k) {
         float cv[4];
-        apply_tex_env(ss.unit[k], ss.unit[k].view.base, c, cf[f], tf, ss.slot_of_unit, tf[k], cv);
+        tex_env(ss.unit[k], ss.unit[k].view.base, c, cf[f], tf, ss.slot_of_unit, tf[k], cv);
         for (int ch = 0; ch < 4; ++ch)
           c[ch] = cv[ch];
       }
