@@ -39,10 +39,23 @@ uint8_t quantize(float x, int bits) {
 
 } // namespace
 
+GLenum uncompressed_internal_format(GLenum internalformat) {
+  switch (internalformat) {
+  case GL_COMPRESSED_ALPHA: return GL_ALPHA;
+  case GL_COMPRESSED_LUMINANCE: return GL_LUMINANCE;
+  case GL_COMPRESSED_LUMINANCE_ALPHA: return GL_LUMINANCE_ALPHA;
+  case GL_COMPRESSED_INTENSITY: return GL_INTENSITY;
+  case GL_COMPRESSED_RGB: return GL_RGB;
+  case GL_COMPRESSED_RGBA: return GL_RGBA;
+  default: return internalformat;
+  }
+}
+
 bool lookup_internal_format(GLint internalformat, TexFormatInfo& out) {
   using B = TexBase;
   switch (internalformat) {
   case GL_ALPHA:
+  case GL_COMPRESSED_ALPHA:
   case GL_ALPHA4:
   case GL_ALPHA8:
     out = colour(B::Alpha, 0, 0, 0, 8);
@@ -53,6 +66,7 @@ bool lookup_internal_format(GLint internalformat, TexFormatInfo& out) {
     return true;
   case 1:
   case GL_LUMINANCE:
+  case GL_COMPRESSED_LUMINANCE:
   case GL_LUMINANCE4:
   case GL_LUMINANCE8:
     out = colour(B::Luminance, 0, 0, 0, 0, 8);
@@ -63,6 +77,7 @@ bool lookup_internal_format(GLint internalformat, TexFormatInfo& out) {
     return true;
   case 2:
   case GL_LUMINANCE_ALPHA:
+  case GL_COMPRESSED_LUMINANCE_ALPHA:
   case GL_LUMINANCE6_ALPHA2:
   case GL_LUMINANCE8_ALPHA8:
     out = colour(B::LuminanceAlpha, 0, 0, 0, 8, 8);
@@ -76,6 +91,7 @@ bool lookup_internal_format(GLint internalformat, TexFormatInfo& out) {
     out = colour(B::LuminanceAlpha, 0, 0, 0, 16, 16);
     return true;
   case GL_INTENSITY:
+  case GL_COMPRESSED_INTENSITY:
   case GL_INTENSITY4:
   case GL_INTENSITY8:
     out = colour(B::Intensity, 0, 0, 0, 0, 0, 8);
@@ -89,6 +105,7 @@ bool lookup_internal_format(GLint internalformat, TexFormatInfo& out) {
     return true;
   case 3:
   case GL_RGB:
+  case GL_COMPRESSED_RGB:
   case GL_RGB8:
     out = colour(B::RGB, 8, 8, 8, 0);
     return true;
@@ -107,6 +124,7 @@ bool lookup_internal_format(GLint internalformat, TexFormatInfo& out) {
     return true;
   case 4:
   case GL_RGBA:
+  case GL_COMPRESSED_RGBA:
   case GL_RGBA8:
     out = colour(B::RGBA, 8, 8, 8, 8);
     return true;
