@@ -20,6 +20,7 @@
 #include "raster/raster.h"
 #include "state/dlist_state.h"
 #include "state/lighting_state.h"
+#include "state/misc_state.h"
 #include "state/texpipe_state.h"
 #include "texture/texture_object.h"
 #include "state/raster_mode_state.h"
@@ -71,6 +72,7 @@ struct VertexArrays {
   ClientArray edgeflag{false, 1, GL_BOOL, 0, nullptr, 0};
   ClientArray secondary{false, 3, GL_FLOAT, 0, nullptr, 0}; // SECONDARY_COLOR_ARRAY
   ClientArray fog{false, 1, GL_FLOAT, 0, nullptr, 0};       // FOG_COORD_ARRAY (GL 1.4)
+  ClientArray index{false, 1, GL_FLOAT, 0, nullptr, 0};     // INDEX_ARRAY (never read)
 };
 
 // A buffer object (GL 2.1 §2.9).
@@ -207,6 +209,7 @@ struct AttribFrame {
     float scale[4], bias[4], depth_scale, depth_bias, zoom_x, zoom_y;
   } pixel{};
   TextureAttrib texture_objects{}; // texture: bindings, object parameters (texture_object.cpp)
+  MiscState misc{}; // colour index, multisample (color_index.cpp, multisample.cpp)
 };
 
 struct Context {
@@ -266,6 +269,9 @@ struct Context {
 
   // ---- texture units and fog (GL 2.1 §2.11.4, §3.8.13, §3.10), src/state/texenv.cpp ----
   TexPipeState texpipe;
+
+  // ---- colour index and multisample (no effect in RGBA, SAMPLE_BUFFERS 0), misc_state.h ----
+  MiscState misc;
 
   // ---- rasterization (Table 6.11, 6.12) ----
   bool cull_enabled = false;

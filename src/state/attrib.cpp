@@ -9,9 +9,9 @@
 //   TEXTURE_BIT: bindings and texture object parameters (Tables 6.16-6.18); the environment,
 //     coordinate generation, enables and active unit are saved by texenv.cpp.
 //   EVAL_BIT: evaluator maps, grid and enables (Table 6.28).
-//   MULTISAMPLE_BIT: multisample enables and sample coverage (Table 6.15). COLOR_BUFFER_BIT,
-//   CURRENT_BIT also: index clear value and write mask, current index once colour index
-//   exists.
+// The current index (CURRENT_BIT), index clear value and write mask (COLOR_BUFFER_BIT) and
+// MULTISAMPLE_BIT with the multisample enables of ENABLE_BIT are saved by multisample.cpp
+// (misc_save_attrib / misc_restore_attrib).
 #include "core/api_util.h"
 #include "dispatch.h"
 #include "state/raster_modes_hooks.h"
@@ -157,6 +157,7 @@ void save(const Context* c, AttribFrame& f) {
   save_raster_modes(c, f.raster_modes);
   if (m & GL_ACCUM_BUFFER_BIT) copy_array(f.accum_clear, c->accum.clear);
   if (m & GL_LIST_BIT) f.list_base = c->dlist.base;
+  misc_save_attrib(c, m, f.misc); // colour index, multisample (multisample.cpp)
 }
 
 // Restore the groups of `f` and return the derived state they invalidate.
@@ -300,6 +301,7 @@ uint32_t restore(Context* c, const AttribFrame& f) {
   dirty |= restore_raster_modes(c, f.raster_modes, m);
   if (m & GL_ACCUM_BUFFER_BIT) copy_array(c->accum.clear, f.accum_clear);
   if (m & GL_LIST_BIT) c->dlist.base = f.list_base;
+  misc_restore_attrib(c, m, f.misc); // no derived state: no effect on rendering
   // GL 2.1 §2.14.3: while COLOR_MATERIAL is enabled the tracked material properties follow
   // the current colour, whichever of the two was restored.
   if ((m & (GL_CURRENT_BIT | GL_LIGHTING_BIT | GL_ENABLE_BIT)) && c->lighting.color_material) {

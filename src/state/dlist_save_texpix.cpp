@@ -1,5 +1,4 @@
 // Display-list savers (GL 2.1 §5.4) for the texture, fog, point-parameter and pixel commands
-// (compressed texture images included)
 // whose arguments point at data of computed size (gl.xml len="COMPSIZE(...)"): the values or
 // the client image are copied when the command is compiled, so the list keeps working after
 // the application reuses its memory.
@@ -174,60 +173,6 @@ template <ImageCall Call> bool save_image(ImageHeader h, const void* pixels) {
     record_error_at_execution(ctx, GL_OUT_OF_MEMORY, "glNewList");
     return list_executes(ctx);
   }
-}
-
-// Compressed images (GL 1.3 §3.8.3) carry `image_size` bytes of data whose layout only the
-// format knows; the list keeps those bytes.
-struct alignas(16) CompressedHeader {
-  GLenum target = 0, format = 0;
-  GLint level = 0, border = 0, x = 0, y = 0, z = 0;
-  GLsizei w = 0, h = 0, d = 0, image_size = 0;
-  bool has_data = false;
-};
-
-using CompressedCall = void (*)(const CompressedHeader& h, const void* data);
-
-template <CompressedCall Call> void replay_compressed(const void* p) {
-  CompressedHeader h;
-  std::memcpy(&h, p, sizeof h);
-  Call(h, h.has_data ? static_cast<const char*>(p) + sizeof h : nullptr);
-}
-
-// Compiles a compressed-image command; returns whether it must also execute now. A negative
-// size is an error of the command, generated when the list executes.
-template <CompressedCall Call> bool save_compressed(CompressedHeader h, const void* data) {
-  Context* ctx = compiling_list();
-  if (ctx == nullptr) return true;
-  h.has_data = data != nullptr && h.image_size > 0;
-  const size_t bytes = h.has_data ? static_cast<size_t>(h.image_size) : 0;
-  try {
-    return record_with_data(&replay_compressed<Call>, &h, sizeof h, data, bytes);
-  } catch (const std::bad_alloc&) {
-    record_error_at_execution(ctx, GL_OUT_OF_MEMORY, "glNewList");
-    return list_executes(ctx);
-  }
-}
-
-void call_compressed_1d(const CompressedHeader& h, const void* data) {
-  exec::CompressedTexImage1D(h.target, h.level, h.format, h.w, h.border, h.image_size, data);
-}
-void call_compressed_2d(const CompressedHeader& h, const void* data) {
-  exec::CompressedTexImage2D(h.target, h.level, h.format, h.w, h.h, h.border, h.image_size, data);
-}
-void call_compressed_3d(const CompressedHeader& h, const void* data) {
-  exec::CompressedTexImage3D(h.target, h.level, h.format, h.w, h.h, h.d, h.border, h.image_size,
-                             data);
-}
-void call_compressed_sub_1d(const CompressedHeader& h, const void* data) {
-  exec::CompressedTexSubImage1D(h.target, h.level, h.x, h.w, h.format, h.image_size, data);
-}
-void call_compressed_sub_2d(const CompressedHeader& h, const void* data) {
-  exec::CompressedTexSubImage2D(h.target, h.level, h.x, h.y, h.w, h.h, h.format, h.image_size,
-                                data);
-}
-void call_compressed_sub_3d(const CompressedHeader& h, const void* data) {
-  exec::CompressedTexSubImage3D(h.target, h.level, h.x, h.y, h.z, h.w, h.h, h.d, h.format,
-                                h.image_size, data);
 }
 
 bool is_proxy(GLenum target) {
@@ -413,65 +358,6 @@ void GLAPIENTRY PolygonStipple(const GLubyte* mask) {
   ImageHeader h;
   h.w = 32, h.h = 32, h.d = 1, h.format = GL_COLOR_INDEX, h.type = GL_BITMAP;
   if (save_image<&call_polygon_stipple>(h, mask)) exec::PolygonStipple(mask);
-}
-
-void GLAPIENTRY CompressedTexImage1D(GLenum target, GLint level, GLenum internalformat,
-                                     GLsizei width, GLint border, GLsizei imageSize,
-                                     const void* data) {
-  CompressedHeader h;
-  h.target = target, h.level = level, h.format = internalformat, h.w = width, h.border = border;
-  h.image_size = imageSize;
-  if (is_proxy(target) || save_compressed<&call_compressed_1d>(h, data))
-    exec::CompressedTexImage1D(target, level, internalformat, width, border, imageSize, data);
-}
-void GLAPIENTRY CompressedTexImage2D(GLenum target, GLint level, GLenum internalformat,
-                                     GLsizei width, GLsizei height, GLint border,
-                                     GLsizei imageSize, const void* data) {
-  CompressedHeader h;
-  h.target = target, h.level = level, h.format = internalformat, h.w = width, h.h = height;
-  h.border = border, h.image_size = imageSize;
-  if (is_proxy(target) || save_compressed<&call_compressed_2d>(h, data))
-    exec::CompressedTexImage2D(target, level, internalformat, width, height, border, imageSize,
-                               data);
-}
-void GLAPIENTRY CompressedTexImage3D(GLenum target, GLint level, GLenum internalformat,
-                                     GLsizei width, GLsizei height, GLsizei depth, GLint border,
-                                     GLsizei imageSize, const void* data) {
-  CompressedHeader h;
-  h.target = target, h.level = level, h.format = internalformat, h.w = width, h.h = height;
-  h.d = depth, h.border = border, h.image_size = imageSize;
-  if (is_proxy(target) || save_compressed<&call_compressed_3d>(h, data))
-    exec::CompressedTexImage3D(target, level, internalformat, width, height, depth, border,
-                               imageSize, data);
-}
-void GLAPIENTRY CompressedTexSubImage1D(GLenum target, GLint level, GLint xoffset, GLsizei width,
-                                        GLenum format, GLsizei imageSize, const void* data) {
-  CompressedHeader h;
-  h.target = target, h.level = level, h.x = xoffset, h.w = width, h.format = format;
-  h.image_size = imageSize;
-  if (save_compressed<&call_compressed_sub_1d>(h, data))
-    exec::CompressedTexSubImage1D(target, level, xoffset, width, format, imageSize, data);
-}
-void GLAPIENTRY CompressedTexSubImage2D(GLenum target, GLint level, GLint xoffset, GLint yoffset,
-                                        GLsizei width, GLsizei height, GLenum format,
-                                        GLsizei imageSize, const void* data) {
-  CompressedHeader h;
-  h.target = target, h.level = level, h.x = xoffset, h.y = yoffset, h.w = width, h.h = height;
-  h.format = format, h.image_size = imageSize;
-  if (save_compressed<&call_compressed_sub_2d>(h, data))
-    exec::CompressedTexSubImage2D(target, level, xoffset, yoffset, width, height, format,
-                                  imageSize, data);
-}
-void GLAPIENTRY CompressedTexSubImage3D(GLenum target, GLint level, GLint xoffset, GLint yoffset,
-                                        GLint zoffset, GLsizei width, GLsizei height,
-                                        GLsizei depth, GLenum format, GLsizei imageSize,
-                                        const void* data) {
-  CompressedHeader h;
-  h.target = target, h.level = level, h.x = xoffset, h.y = yoffset, h.z = zoffset;
-  h.w = width, h.h = height, h.d = depth, h.format = format, h.image_size = imageSize;
-  if (save_compressed<&call_compressed_sub_3d>(h, data))
-    exec::CompressedTexSubImage3D(target, level, xoffset, yoffset, zoffset, width, height, depth,
-                                  format, imageSize, data);
 }
 
 } // namespace saver

@@ -48,6 +48,11 @@ bool* capability(Context* ctx, GLenum cap, uint32_t* dirty) {
   // GL 2.1 §2.11.3: normals are rescaled or normalized before lighting.
   case GL_NORMALIZE: *dirty = kDirtyLighting; return &ctx->normalize;
   case GL_RESCALE_NORMAL: *dirty = kDirtyLighting; return &ctx->rescale_normal;
+  // Multisample enables, without effect (src/state/multisample.cpp).
+  case GL_MULTISAMPLE:
+  case GL_SAMPLE_ALPHA_TO_COVERAGE:
+  case GL_SAMPLE_ALPHA_TO_ONE:
+  case GL_SAMPLE_COVERAGE: return multisample_capability(ctx, cap);
   // Texture target and coordinate-generation enables, fog (src/state/texenv.cpp).
   default: return texpipe_capability(ctx, cap, dirty);
   }
@@ -62,6 +67,7 @@ ClientArray* client_array(Context* ctx, GLenum array) {
   case GL_EDGE_FLAG_ARRAY: return &ctx->arrays.edgeflag;
   case GL_SECONDARY_COLOR_ARRAY: return &ctx->arrays.secondary;
   case GL_FOG_COORD_ARRAY: return &ctx->arrays.fog;
+  case GL_INDEX_ARRAY: return &ctx->arrays.index; // color_index.cpp
   default: return nullptr;
   }
 }

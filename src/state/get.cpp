@@ -130,6 +130,11 @@ bool get_values(Context* ctx, GLenum pname, Values& out) {
     out.add(list_value);
     return true;
   }
+  // Colour index, index array and multisample state (src/state/multisample.cpp).
+  if (int kind = 0; (out.n = misc_query(ctx, pname, out.v, &kind)) > 0) {
+    out.kind = static_cast<Kind>(kind);
+    return true;
+  }
   const Framebuffer& fb = ctx->fb;
   switch (pname) {
   // Current values (Table 6.5).
@@ -326,6 +331,9 @@ bool get_values(Context* ctx, GLenum pname, Values& out) {
   // GL 1.2 DrawRangeElements recommendations: Pineda has no such limit; report large values.
   case GL_MAX_ELEMENTS_VERTICES:
   case GL_MAX_ELEMENTS_INDICES: out.add(1 << 20); return true;
+  // GL 2.1 §3.8.1: no specific compressed internal formats (src/texture/tex_compressed.cpp).
+  case GL_NUM_COMPRESSED_TEXTURE_FORMATS: out.add(0); return true;
+  case GL_COMPRESSED_TEXTURE_FORMATS: return true;
   default: {
     // Texture units, texture environment and generation, fog (src/state/texenv.cpp).
     int kind = 0;
@@ -445,6 +453,7 @@ void GLAPIENTRY GetPointerv(GLenum pname, void** params) {
   case GL_EDGE_FLAG_ARRAY_POINTER: p = ctx->arrays.edgeflag.pointer; break;
   case GL_SECONDARY_COLOR_ARRAY_POINTER: p = ctx->arrays.secondary.pointer; break;
   case GL_FOG_COORD_ARRAY_POINTER: p = ctx->arrays.fog.pointer; break;
+  case GL_INDEX_ARRAY_POINTER: p = ctx->arrays.index.pointer; break;
   default: return record_error(ctx, GL_INVALID_ENUM, "glGetPointerv", pname);
   }
   if (params != nullptr) *params = const_cast<void*>(p);

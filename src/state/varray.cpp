@@ -327,6 +327,8 @@ void GLAPIENTRY InterleavedArrays(GLenum format, GLsizei stride, const void* poi
   VertexArrays& a = ctx->arrays;
   ClientArray& tex = a.texcoord[ctx->client_active_texture];
   a.edgeflag.enabled = false;
+  a.index.enabled = false;
+  a.fog.enabled = false;
   a.secondary.enabled = false; // GL 2.1 §2.8: InterleavedArrays disables the other arrays
   tex.enabled = l->et;
   if (l->et) set_pointer("glInterleavedArrays", tex, l->st, GL_FLOAT, s, pointer, ctx);

@@ -1,8 +1,11 @@
-// Compressed texture images (GL 2.1 §3.8.3, §6.1.4). Pineda supports no specific compressed
-// format (NUM_COMPRESSED_TEXTURE_FORMATS is 0) and stores images given a generic compressed
-// internal format (COMPRESSED_RGB ...) uncompressed, as §3.8.1 allows. So every compressed
-// image command names an unsupported format (INVALID_ENUM) and no image is ever compressed
-// (GetCompressedTexImage: INVALID_OPERATION).
+// Compressed texture images (GL 2.1 §3.8.3, §6.1.4): glCompressedTexImage{1,2,3}D,
+// glCompressedTexSubImage{1,2,3}D and glGetCompressedTexImage. Pineda supports no specific
+// compressed internal format (NUM_COMPRESSED_TEXTURE_FORMATS is 0), so no texture image is ever
+// stored compressed: the generic compressed formats given to TexImage are stored uncompressed
+// (§3.8.1, tex_format.cpp), and each of these commands ends in the error the spec names for
+// it. Their display-list savers are here too (src/api/dlist_savers.txt).
+#include <cstring>
+
 #include "core/api_util.h"
 #include "dispatch.h"
 #include "texture/texture_internal.h"
@@ -11,72 +14,191 @@ namespace pineda {
 
 namespace {
 
-// The checks of CompressedTex[Sub]Image: a target the uncompressed command takes, then the
-// format, which is never a supported specific compressed format.
-void compressed_image(const char* func, int dims, GLenum target, bool allow_proxy) {
-  PINEDA_CTX_OUTSIDE(func);
-  ImageTarget it;
-  if (!image_target(ctx, target, dims, allow_proxy, it))
-    return record_error(ctx, GL_INVALID_ENUM, func, target);
-  record_error(ctx, GL_INVALID_ENUM, func);
+// Table 3.17: the generic compressed internal formats.
+bool generic_compressed(GLenum format) {
+  switch (format) {
+  case GL_COMPRESSED_ALPHA:
+  case GL_COMPRESSED_LUMINANCE:
+  case GL_COMPRESSED_LUMINANCE_ALPHA:
+  case GL_COMPRESSED_INTENSITY:
+  case GL_COMPRESSED_RGB:
+  case GL_COMPRESSED_RGBA:
+    return true;
+  default:
+    return false;
+  }
 }
 
-int dims_of_target(GLenum target) {
-  switch (target) {
-  case GL_TEXTURE_1D:
-    return 1;
-  case GL_TEXTURE_3D:
-    return 3;
-  default:
-    return 2;
-  }
+// §3.8.3: the target must be one TexImage of the same dimension takes; internalformat must be
+// a specific compressed format, of which there are none ("using any of the six generic
+// compressed internal formats as internalformat will result in an INVALID_ENUM error").
+void compressed_image(const char* func, int dims, GLenum target, GLenum internalformat) {
+  PINEDA_CTX_OUTSIDE(func);
+  ImageTarget it;
+  if (!image_target(ctx, target, dims, true, it))
+    return record_error(ctx, GL_INVALID_ENUM, func, target);
+  record_error(ctx, GL_INVALID_ENUM, func, internalformat);
+}
+
+// §3.8.3: the checks of TexSubImage (target, level, sizes, an existing image, the region
+// inside it), a generic compressed `format` is INVALID_ENUM, a negative imageSize
+// INVALID_VALUE; and since the image being modified is never in a compressed format, `format`
+// cannot match its internal format: INVALID_OPERATION.
+void compressed_sub_image(const char* func, int dims, GLenum target, GLint level, int x, int y,
+                          int z, int w, int h, int d, GLenum format, GLsizei image_size) {
+  PINEDA_CTX_OUTSIDE(func);
+  ImageTarget it;
+  if (!image_target(ctx, target, dims, false, it))
+    return record_error(ctx, GL_INVALID_ENUM, func, target);
+  if (generic_compressed(format)) return record_error(ctx, GL_INVALID_ENUM, func, format);
+  if (dims < 2) y = 0, h = 1;
+  if (dims < 3) z = 0, d = 1;
+  if (sub_image_target(ctx, func, it, level, x, y, z, w, h, d) == nullptr) return;
+  if (image_size < 0) return record_error(ctx, GL_INVALID_VALUE, func);
+  record_error(ctx, GL_INVALID_OPERATION, func);
+}
+
+// The dimension of a GetCompressedTexImage target (cube faces are 2D).
+int query_dims(GLenum target) {
+  return target == GL_TEXTURE_1D ? 1 : target == GL_TEXTURE_3D ? 3 : 2;
+}
+
+bool proxy_target(GLenum target) {
+  return target == GL_PROXY_TEXTURE_1D || target == GL_PROXY_TEXTURE_2D ||
+         target == GL_PROXY_TEXTURE_3D || target == GL_PROXY_TEXTURE_CUBE_MAP;
+}
+
+// ---- display lists (§5.4) ------------------------------------------------------------------
+// Every compressed image command is an error here and never reads its data, so a list keeps
+// the other arguments only and replays the call without data: the error is generated when the
+// list executes, against the texture state of that time. Proxy targets are executed at once,
+// as for TexImage.
+
+struct ImageArgs {
+  GLenum target, internalformat;
+  GLint dims;
+};
+
+void replay_image(const void* p) {
+  ImageArgs a;
+  std::memcpy(&a, p, sizeof a);
+  const char* const names[] = {"glCompressedTexImage1D", "glCompressedTexImage2D",
+                               "glCompressedTexImage3D"};
+  compressed_image(names[a.dims - 1], a.dims, a.target, a.internalformat);
+}
+
+void save_image(int dims, GLenum target, GLenum internalformat) {
+  const ImageArgs a{target, internalformat, dims};
+  if (proxy_target(target) || dlist_record(&replay_image, &a, sizeof a)) replay_image(&a);
+}
+
+struct SubImageArgs {
+  GLenum target, format;
+  GLint dims, level, x, y, z, w, h, d;
+  GLsizei image_size;
+};
+
+void replay_sub_image(const void* p) {
+  SubImageArgs a;
+  std::memcpy(&a, p, sizeof a);
+  const char* const names[] = {"glCompressedTexSubImage1D", "glCompressedTexSubImage2D",
+                               "glCompressedTexSubImage3D"};
+  compressed_sub_image(names[a.dims - 1], a.dims, a.target, a.level, a.x, a.y, a.z, a.w, a.h, a.d,
+                       a.format, a.image_size);
+}
+
+void save_sub_image(const SubImageArgs& a) {
+  if (dlist_record(&replay_sub_image, &a, sizeof a)) replay_sub_image(&a);
 }
 
 } // namespace
 
 namespace exec {
 
-void GLAPIENTRY CompressedTexImage1D(GLenum target, GLint, GLenum, GLsizei, GLint, GLsizei,
-                                     const void*) {
-  compressed_image("glCompressedTexImage1D", 1, target, true);
-}
-
-void GLAPIENTRY CompressedTexImage2D(GLenum target, GLint, GLenum, GLsizei, GLsizei, GLint, GLsizei,
-                                     const void*) {
-  compressed_image("glCompressedTexImage2D", 2, target, true);
-}
-
-void GLAPIENTRY CompressedTexImage3D(GLenum target, GLint, GLenum, GLsizei, GLsizei, GLsizei, GLint,
+void GLAPIENTRY CompressedTexImage1D(GLenum target, GLint, GLenum internalformat, GLsizei, GLint,
                                      GLsizei, const void*) {
-  compressed_image("glCompressedTexImage3D", 3, target, true);
+  compressed_image("glCompressedTexImage1D", 1, target, internalformat);
 }
 
-void GLAPIENTRY CompressedTexSubImage1D(GLenum target, GLint, GLint, GLsizei, GLenum, GLsizei,
-                                        const void*) {
-  compressed_image("glCompressedTexSubImage1D", 1, target, false);
+void GLAPIENTRY CompressedTexImage2D(GLenum target, GLint, GLenum internalformat, GLsizei, GLsizei,
+                                     GLint, GLsizei, const void*) {
+  compressed_image("glCompressedTexImage2D", 2, target, internalformat);
 }
 
-void GLAPIENTRY CompressedTexSubImage2D(GLenum target, GLint, GLint, GLint, GLsizei, GLsizei,
-                                        GLenum, GLsizei, const void*) {
-  compressed_image("glCompressedTexSubImage2D", 2, target, false);
+void GLAPIENTRY CompressedTexImage3D(GLenum target, GLint, GLenum internalformat, GLsizei, GLsizei,
+                                     GLsizei, GLint, GLsizei, const void*) {
+  compressed_image("glCompressedTexImage3D", 3, target, internalformat);
 }
 
-void GLAPIENTRY CompressedTexSubImage3D(GLenum target, GLint, GLint, GLint, GLint, GLsizei, GLsizei,
-                                        GLsizei, GLenum, GLsizei, const void*) {
-  compressed_image("glCompressedTexSubImage3D", 3, target, false);
+void GLAPIENTRY CompressedTexSubImage1D(GLenum target, GLint level, GLint xoffset, GLsizei width,
+                                        GLenum format, GLsizei imageSize, const void*) {
+  compressed_sub_image("glCompressedTexSubImage1D", 1, target, level, xoffset, 0, 0, width, 1, 1,
+                       format, imageSize);
 }
 
+void GLAPIENTRY CompressedTexSubImage2D(GLenum target, GLint level, GLint xoffset, GLint yoffset,
+                                        GLsizei width, GLsizei height, GLenum format,
+                                        GLsizei imageSize, const void*) {
+  compressed_sub_image("glCompressedTexSubImage2D", 2, target, level, xoffset, yoffset, 0, width,
+                       height, 1, format, imageSize);
+}
+
+void GLAPIENTRY CompressedTexSubImage3D(GLenum target, GLint level, GLint xoffset, GLint yoffset,
+                                        GLint zoffset, GLsizei width, GLsizei height, GLsizei depth,
+                                        GLenum format, GLsizei imageSize, const void*) {
+  compressed_sub_image("glCompressedTexSubImage3D", 3, target, level, xoffset, yoffset, zoffset,
+                       width, height, depth, format, imageSize);
+}
+
+// §6.1.4: target as for GetTexImage (no proxies, no CUBE_MAP); a level outside [0, max) is
+// INVALID_VALUE; an image stored uncompressed, which every image is, INVALID_OPERATION. A level
+// with no image is INVALID_VALUE, as in Mesa llvmpipe (it holds no image to return at all).
 void GLAPIENTRY GetCompressedTexImage(GLenum target, GLint level, void*) {
   PINEDA_CTX_OUTSIDE("glGetCompressedTexImage");
   ImageTarget it;
-  if (!image_target(ctx, target, dims_of_target(target), false, it))
+  if (!image_target(ctx, target, query_dims(target), false, it))
     return record_error(ctx, GL_INVALID_ENUM, "glGetCompressedTexImage", target);
-  if (level < 0 || level >= it.max_levels)
+  if (level < 0 || level >= it.max_levels || it.tex->images[it.face][level].width == 0)
     return record_error(ctx, GL_INVALID_VALUE, "glGetCompressedTexImage");
-  // §6.1.4: reading back an image that is not compressed is INVALID_OPERATION.
   record_error(ctx, GL_INVALID_OPERATION, "glGetCompressedTexImage");
 }
 
 } // namespace exec
 
+namespace saver {
+
+void GLAPIENTRY CompressedTexImage1D(GLenum target, GLint, GLenum internalformat, GLsizei, GLint,
+                                     GLsizei, const void*) {
+  save_image(1, target, internalformat);
+}
+
+void GLAPIENTRY CompressedTexImage2D(GLenum target, GLint, GLenum internalformat, GLsizei, GLsizei,
+                                     GLint, GLsizei, const void*) {
+  save_image(2, target, internalformat);
+}
+
+void GLAPIENTRY CompressedTexImage3D(GLenum target, GLint, GLenum internalformat, GLsizei, GLsizei,
+                                     GLsizei, GLint, GLsizei, const void*) {
+  save_image(3, target, internalformat);
+}
+
+void GLAPIENTRY CompressedTexSubImage1D(GLenum target, GLint level, GLint xoffset, GLsizei width,
+                                        GLenum format, GLsizei imageSize, const void*) {
+  save_sub_image({target, format, 1, level, xoffset, 0, 0, width, 1, 1, imageSize});
+}
+
+void GLAPIENTRY CompressedTexSubImage2D(GLenum target, GLint level, GLint xoffset, GLint yoffset,
+                                        GLsizei width, GLsizei height, GLenum format,
+                                        GLsizei imageSize, const void*) {
+  save_sub_image({target, format, 2, level, xoffset, yoffset, 0, width, height, 1, imageSize});
+}
+
+void GLAPIENTRY CompressedTexSubImage3D(GLenum target, GLint level, GLint xoffset, GLint yoffset,
+                                        GLint zoffset, GLsizei width, GLsizei height, GLsizei depth,
+                                        GLenum format, GLsizei imageSize, const void*) {
+  save_sub_image(
+      {target, format, 3, level, xoffset, yoffset, zoffset, width, height, depth, imageSize});
+}
+
+} // namespace saver
 } // namespace pineda

@@ -39,6 +39,25 @@ uint8_t quantize(float x, int bits) {
 
 } // namespace
 
+GLenum uncompressed_internal_format(GLenum internalformat) {
+  switch (internalformat) {
+  case GL_COMPRESSED_ALPHA:
+    return GL_ALPHA;
+  case GL_COMPRESSED_LUMINANCE:
+    return GL_LUMINANCE;
+  case GL_COMPRESSED_LUMINANCE_ALPHA:
+    return GL_LUMINANCE_ALPHA;
+  case GL_COMPRESSED_INTENSITY:
+    return GL_INTENSITY;
+  case GL_COMPRESSED_RGB:
+    return GL_RGB;
+  case GL_COMPRESSED_RGBA:
+    return GL_RGBA;
+  default:
+    return internalformat;
+  }
+}
+
 bool lookup_internal_format(GLint internalformat, TexFormatInfo& out) {
   using B = TexBase;
   switch (internalformat) {

@@ -26,6 +26,11 @@ struct TexFormatInfo {
 // value TexImage rejects with INVALID_VALUE (GL 2.1 §3.8.1).
 bool lookup_internal_format(GLint internalformat, TexFormatInfo& out);
 
+// GL 2.1 §3.8.1: with no specific compressed formats, a generic compressed internal format
+// (Table 3.17) "is instead replaced by the corresponding base internal format": the image is
+// stored uncompressed and TEXTURE_INTERNAL_FORMAT reads the base format. Other values unchanged.
+GLenum uncompressed_internal_format(GLenum internalformat);
+
 // Converts `n` unpacked RGBA groups (floats, clamped to [0,1] here) into stored texels:
 // components selected by base format (Table 3.15), rounded to their resolution, expanded by
 // Table 3.23.

@@ -308,7 +308,7 @@ bool image_target(Context* ctx, GLenum target, int dims, bool allow_proxy, Image
 void set_image_info(TexImage& im, GLenum internalformat, const TexFormatInfo& f, int w, int h,
                     int d, int border) {
   im.width = w, im.height = h, im.depth = d, im.border = border;
-  im.internal_format = internalformat;
+  im.internal_format = uncompressed_internal_format(internalformat); // §3.8.1
   im.base = f.base;
   im.is_depth = f.depth;
   im.red_size = f.r, im.green_size = f.g, im.blue_size = f.b, im.alpha_size = f.a;
