@@ -77,6 +77,13 @@ void set_capability(const char* func, GLenum cap, bool value) {
   uint32_t dirty = 0;
   bool* flag = capability(ctx, cap, &dirty);
   if (flag == nullptr) {
+    // GL 2.1 §2.8 enables the client arrays with EnableClientState only, but Mesa (the
+    // tie-breaker) also takes them in Enable/Disable, and programs rely on it (piglit
+    // gl-1.1-color-material-array does glEnable(GL_VERTEX_ARRAY)).
+    if (ClientArray* a = client_array(ctx, cap)) {
+      a->enabled = value;
+      return;
+    }
     record_error(ctx, GL_INVALID_ENUM, func, cap);
     return;
   }
