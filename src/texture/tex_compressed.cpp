@@ -14,21 +14,6 @@ namespace pineda {
 
 namespace {
 
-// Table 3.17: the generic compressed internal formats.
-bool generic_compressed(GLenum format) {
-  switch (format) {
-  case GL_COMPRESSED_ALPHA:
-  case GL_COMPRESSED_LUMINANCE:
-  case GL_COMPRESSED_LUMINANCE_ALPHA:
-  case GL_COMPRESSED_INTENSITY:
-  case GL_COMPRESSED_RGB:
-  case GL_COMPRESSED_RGBA:
-    return true;
-  default:
-    return false;
-  }
-}
-
 // §3.8.3: the target must be one TexImage of the same dimension takes; internalformat must be
 // a specific compressed format, of which there are none ("using any of the six generic
 // compressed internal formats as internalformat will result in an INVALID_ENUM error").
@@ -40,22 +25,16 @@ void compressed_image(const char* func, int dims, GLenum target, GLenum internal
   record_error(ctx, GL_INVALID_ENUM, func, internalformat);
 }
 
-// §3.8.3: the checks of TexSubImage (target, level, sizes, an existing image, the region
-// inside it), a generic compressed `format` is INVALID_ENUM, a negative imageSize
-// INVALID_VALUE; and since the image being modified is never in a compressed format, `format`
-// cannot match its internal format: INVALID_OPERATION.
-void compressed_sub_image(const char* func, int dims, GLenum target, GLint level, int x, int y,
-                          int z, int w, int h, int d, GLenum format, GLsizei image_size) {
+// §3.8.3: the target must be one TexSubImage of the same dimension takes, and `format` a
+// supported specific compressed format, of which there are none: INVALID_ENUM, checked before
+// the level, region and size, as Mesa (the tie-breaker) checks them.
+void compressed_sub_image(const char* func, int dims, GLenum target, GLint, int, int, int, int,
+                          int, int, GLenum format, GLsizei) {
   PINEDA_CTX_OUTSIDE(func);
   ImageTarget it;
   if (!image_target(ctx, target, dims, false, it))
     return record_error(ctx, GL_INVALID_ENUM, func, target);
-  if (generic_compressed(format)) return record_error(ctx, GL_INVALID_ENUM, func, format);
-  if (dims < 2) y = 0, h = 1;
-  if (dims < 3) z = 0, d = 1;
-  if (sub_image_target(ctx, func, it, level, x, y, z, w, h, d) == nullptr) return;
-  if (image_size < 0) return record_error(ctx, GL_INVALID_VALUE, func);
-  record_error(ctx, GL_INVALID_OPERATION, func);
+  record_error(ctx, GL_INVALID_ENUM, func, format);
 }
 
 // The dimension of a GetCompressedTexImage target (cube faces are 2D).

@@ -619,8 +619,9 @@ TEST_F(TextureTest, CompressedFormats) {
   GLint v = -1;
   glGetTexLevelParameteriv(GL_TEXTURE_2D, 0, GL_TEXTURE_COMPRESSED, &v);
   EXPECT_EQ(v, GL_FALSE);
+  // §3.8.1: with no specific compressed format the base format replaces the generic one.
   glGetTexLevelParameteriv(GL_TEXTURE_2D, 0, GL_TEXTURE_INTERNAL_FORMAT, &v);
-  EXPECT_EQ(v, GL_COMPRESSED_RGBA);
+  EXPECT_EQ(v, GL_RGBA);
   uint8_t back[4] = {};
   glGetTexImage(GL_TEXTURE_2D, 0, GL_RGBA, GL_UNSIGNED_BYTE, back);
   EXPECT_EQ(back[3], 40);
