@@ -5,6 +5,7 @@
 #include <limits>
 
 #include "core/api_util.h"
+#include "core/version.h"
 #include "dispatch.h"
 #include "state/raster_modes_hooks.h"
 
@@ -395,13 +396,8 @@ const GLubyte* GLAPIENTRY GetString(GLenum name) {
   switch (name) {
   case GL_VENDOR: s = "Pineda"; break;
   case GL_RENDERER: s = "Pineda (CPU rasterizer)"; break;
-  // Honest version (GL 2.1 §6.1.11): the fixed-function feature set is not complete yet, so
-  // only the GL 1.1 number is claimed, with the gaps spelled out.
-  case GL_VERSION:
-    s = "1.1 Pineda 0.1 (subset: no texturing, fog, display lists, pixel drawing, accumulation "
-        "or selection yet)";
-    break;
-  case GL_EXTENSIONS: s = ""; break;
+  case GL_VERSION: s = kGLVersionString; break; // core/version.h
+  case GL_EXTENSIONS: s = kGLExtensions; break;
   default: record_error(ctx, GL_INVALID_ENUM, "glGetString", name); return nullptr;
   }
   return reinterpret_cast<const GLubyte*>(s);

@@ -10,6 +10,7 @@
 
 #include "core/api_util.h"
 #include "core/context.h"
+#include "core/version.h"
 #include "dispatch.h"
 
 #define OSMESA_EXPORT extern "C" __attribute__((visibility("default")))
@@ -152,7 +153,9 @@ OSMESA_EXPORT OSMesaContext OSMesaCreateContextAttribs(const int* attribList,
     }
   }
   // The version glGetString(GL_VERSION) reports is the most that can be promised.
-  if (major > 1 || (major == 1 && minor > 1)) return nullptr;
+  if (major > pineda::kGLVersionMajor ||
+      (major == pineda::kGLVersionMajor && minor > pineda::kGLVersionMinor))
+    return nullptr;
   return OSMesaCreateContextExt(format, depth, stencil, accum, sharelist);
 }
 
