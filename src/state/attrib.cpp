@@ -4,11 +4,11 @@
 // what each must grow to cover as the state is implemented (§6.1.14, Table 6.2). LINE_BIT,
 // POINT_BIT, POLYGON_STIPPLE_BIT and the stipple, smooth and offset state of POLYGON_BIT are
 // saved and restored by raster_modes.cpp (save_raster_modes / restore_raster_modes); FOG_BIT and
-// the environment, coordinate generation, enables and active unit of TEXTURE_BIT by texenv.cpp.
+// the environment, coordinate generation, enables and active unit of TEXTURE_BIT by texenv.cpp;
+// EVAL_BIT and the evaluator enables of ENABLE_BIT by eval.cpp.
 //   POINT_BIT also: sprite enables and coordinate origin once point sprites exist.
 //   TEXTURE_BIT: bindings and texture object parameters (Tables 6.16-6.18); the environment,
 //     coordinate generation, enables and active unit are saved by texenv.cpp.
-//   EVAL_BIT: evaluator maps, grid and enables (Table 6.28).
 //   MULTISAMPLE_BIT: multisample enables and sample coverage (Table 6.15). COLOR_BUFFER_BIT,
 //   CURRENT_BIT also: index clear value and write mask, current index once colour index
 //   exists.
@@ -25,6 +25,9 @@ namespace pineda {
 // TEXTURE_BIT and FOG_BIT that live in Context::texpipe; restore returns the dirty bits.
 void texpipe_save_attrib(const Context* c, GLbitfield mask, TexPipeAttrib& f);
 uint32_t texpipe_restore_attrib(Context* c, GLbitfield mask, const TexPipeAttrib& f);
+// Evaluators (src/state/eval.cpp): EVAL_BIT and the evaluator enables of ENABLE_BIT.
+void eval_save_attrib(const Context* c, GLbitfield mask, EvalAttrib& f);
+void eval_restore_attrib(Context* c, GLbitfield mask, const EvalAttrib& f);
 
 namespace {
 
@@ -157,6 +160,7 @@ void save(const Context* c, AttribFrame& f) {
   if (m & GL_ACCUM_BUFFER_BIT) copy_array(f.accum_clear, c->accum.clear);
   if (m & GL_LIST_BIT) f.list_base = c->dlist.base;
   if (m & GL_TEXTURE_BIT) save_texture_attrib(c, f.texture_objects);
+  eval_save_attrib(c, m, f.eval);
 }
 
 // Restore the groups of `f` and return the derived state they invalidate.
@@ -300,6 +304,7 @@ uint32_t restore(Context* c, const AttribFrame& f) {
   if (m & GL_ACCUM_BUFFER_BIT) copy_array(c->accum.clear, f.accum_clear);
   if (m & GL_LIST_BIT) c->dlist.base = f.list_base;
   if (m & GL_TEXTURE_BIT) restore_texture_attrib(c, f.texture_objects); // marks kDirtyTexture
+  eval_restore_attrib(c, m, f.eval); // no derived state depends on it
   // GL 2.1 §2.14.3: while COLOR_MATERIAL is enabled the tracked material properties follow
   // the current colour, whichever of the two was restored.
   if ((m & (GL_CURRENT_BIT | GL_LIGHTING_BIT | GL_ENABLE_BIT)) && c->lighting.color_material) {
