@@ -9,6 +9,7 @@
 // does.
 #include <cmath>
 #include <cstddef>
+#include <limits>
 #include <memory>
 #include <type_traits>
 
@@ -286,8 +287,11 @@ template <typename T> void get_map(const char* func, GLenum target, GLenum query
     return record_error(ctx, GL_INVALID_ENUM, func, query);
   if (out == nullptr) return;
   auto put = [&](size_t i, double x) {
+    // Values beyond the integer range clamp to it (converting them would be undefined).
     if constexpr (std::is_integral_v<T>)
-      out[i] = static_cast<T>(std::lround(x));
+      out[i] = x >= 2147483647.0    ? std::numeric_limits<T>::max()
+               : x <= -2147483648.0 ? std::numeric_limits<T>::min()
+                                    : static_cast<T>(std::lround(x));
     else
       out[i] = static_cast<T>(x);
   };

@@ -524,4 +524,36 @@ TEST_F(Eval, DisplayListCopiesPoints) {
   glDeleteLists(list, 1);
 }
 
+// MapGrid and EvalMesh compile as calls; GetMap executes at once (§5.4).
+TEST_F(Eval, DisplayListMeshAndGetMap) {
+  const float pts[] = {-0.5f, 0.0f, 0.0f, 0.5f, 0.0f, 0.0f};
+  glMap1f(GL_MAP1_VERTEX_3, 0, 1, 3, 2, pts);
+  glEnable(GL_MAP1_VERTEX_3);
+  const GLuint list = glGenLists(1);
+  glNewList(list, GL_COMPILE);
+  glMapGrid1f(2, 0.0f, 1.0f);
+  glEvalMesh1(GL_POINT, 0, 2);
+  GLint order = 0;
+  glGetMapiv(GL_MAP1_VERTEX_3, GL_ORDER, &order);
+  EXPECT_EQ(order, 2);
+  glEndList();
+  GLint n = 0;
+  glGetIntegerv(GL_MAP1_GRID_SEGMENTS, &n);
+  EXPECT_EQ(n, 1);
+  const Fb r = feedback(GL_2D, [&] { glCallList(list); });
+  ASSERT_EQ(r.n, 9);
+  EXPECT_NEAR(r.v[4], win(0.0), 1e-4);
+  EXPECT_NEAR(r.v[7], win(0.5), 1e-4);
+  glDeleteLists(list, 1);
+  // Integer queries of huge coefficients clamp.
+  const float big[] = {1e20f, -1e20f, 2.5f};
+  glMap1f(GL_MAP1_NORMAL, 0, 1, 3, 1, big);
+  GLint c[3] = {};
+  glGetMapiv(GL_MAP1_NORMAL, GL_COEFF, c);
+  EXPECT_EQ(c[0], 2147483647);
+  EXPECT_EQ(c[1], -2147483647 - 1);
+  EXPECT_EQ(c[2], 3);
+  EXPECT_EQ(err(), GLenum(GL_NO_ERROR));
+}
+
 } // namespace
