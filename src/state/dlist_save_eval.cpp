@@ -5,6 +5,7 @@
 // error then comes when the list executes (§5.4).
 #include <cstring>
 #include <memory>
+#include <type_traits>
 #include <vector>
 
 #include "core/api_util.h"
@@ -43,7 +44,8 @@ template <typename T> void replay_map(const void* p) {
   MapHeader<T> h;
   std::memcpy(&h, p, sizeof h);
   std::vector<T> points(h.copied);
-  std::memcpy(points.data(), static_cast<const char*>(p) + sizeof h, h.copied * sizeof(T));
+  if (h.copied != 0)
+    std::memcpy(points.data(), static_cast<const char*>(p) + sizeof h, h.copied * sizeof(T));
   // When nothing was copied the command fails before it reads any point: a dummy will do.
   static const T dummy[1] = {};
   const T* data = h.copied != 0 ? points.data() : h.has_points ? dummy : nullptr;
