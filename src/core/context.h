@@ -25,6 +25,7 @@
 #include "texture/texture_object.h"
 #include "state/raster_mode_state.h"
 #include "state/select.h"
+#include "state/eval_state.h"
 
 namespace pineda {
 
@@ -210,6 +211,7 @@ struct AttribFrame {
   } pixel{};
   TextureAttrib texture_objects{}; // texture: bindings, object parameters (texture_object.cpp)
   MiscState misc{}; // colour index, multisample (color_index.cpp, multisample.cpp)
+  EvalAttrib eval; // eval and the evaluator enables (src/state/eval.cpp)
 };
 
 struct Context {
@@ -282,6 +284,7 @@ struct Context {
   float point_size = 1.0f;
   float line_width = 1.0f;
   RasterModeState raster_modes; // stipples, smoothing, point parameters, offset (raster_modes.cpp)
+  EvalState eval; // evaluator maps, enables and grids (GL 2.1 §5.1, src/state/eval.cpp)
 
   // ---- per-fragment operations and framebuffer control (Tables 6.20-6.22) ----
   bool depth_test = false;

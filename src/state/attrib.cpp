@@ -4,14 +4,14 @@
 // what each must grow to cover as the state is implemented (§6.1.14, Table 6.2). LINE_BIT,
 // POINT_BIT, POLYGON_STIPPLE_BIT and the stipple, smooth and offset state of POLYGON_BIT are
 // saved and restored by raster_modes.cpp (save_raster_modes / restore_raster_modes); FOG_BIT and
-// the environment, coordinate generation, enables and active unit of TEXTURE_BIT by texenv.cpp.
+// the environment, coordinate generation, enables and active unit of TEXTURE_BIT by texenv.cpp;
+// EVAL_BIT and the evaluator enables of ENABLE_BIT by eval.cpp.
 //   POINT_BIT also: sprite enables and coordinate origin once point sprites exist.
 //   TEXTURE_BIT: bindings and texture object parameters (Tables 6.16-6.18); the environment,
 //     coordinate generation, enables and active unit are saved by texenv.cpp.
-//   EVAL_BIT: evaluator maps, grid and enables (Table 6.28).
 // The current index (CURRENT_BIT), index clear value and write mask (COLOR_BUFFER_BIT) and
 // MULTISAMPLE_BIT with the multisample enables of ENABLE_BIT are saved by multisample.cpp
-// (misc_save_attrib / misc_restore_attrib).
+// (misc_save_attrib / misc_restore_attrib); EVAL_BIT and the evaluator enables by eval.cpp.
 #include "core/api_util.h"
 #include "dispatch.h"
 #include "state/raster_modes_hooks.h"
@@ -25,6 +25,9 @@ namespace pineda {
 // TEXTURE_BIT and FOG_BIT that live in Context::texpipe; restore returns the dirty bits.
 void texpipe_save_attrib(const Context* c, GLbitfield mask, TexPipeAttrib& f);
 uint32_t texpipe_restore_attrib(Context* c, GLbitfield mask, const TexPipeAttrib& f);
+// Evaluators (src/state/eval.cpp): EVAL_BIT and the evaluator enables of ENABLE_BIT.
+void eval_save_attrib(const Context* c, GLbitfield mask, EvalAttrib& f);
+void eval_restore_attrib(Context* c, GLbitfield mask, const EvalAttrib& f);
 
 namespace {
 
@@ -158,6 +161,7 @@ void save(const Context* c, AttribFrame& f) {
   if (m & GL_ACCUM_BUFFER_BIT) copy_array(f.accum_clear, c->accum.clear);
   if (m & GL_LIST_BIT) f.list_base = c->dlist.base;
   misc_save_attrib(c, m, f.misc); // colour index, multisample (multisample.cpp)
+  eval_save_attrib(c, m, f.eval);
 }
 
 // Restore the groups of `f` and return the derived state they invalidate.
@@ -302,6 +306,7 @@ uint32_t restore(Context* c, const AttribFrame& f) {
   if (m & GL_ACCUM_BUFFER_BIT) copy_array(c->accum.clear, f.accum_clear);
   if (m & GL_LIST_BIT) c->dlist.base = f.list_base;
   misc_restore_attrib(c, m, f.misc); // no derived state: no effect on rendering
+  eval_restore_attrib(c, m, f.eval); // no derived state depends on it
   // GL 2.1 §2.14.3: while COLOR_MATERIAL is enabled the tracked material properties follow
   // the current colour, whichever of the two was restored.
   if ((m & (GL_CURRENT_BIT | GL_LIGHTING_BIT | GL_ENABLE_BIT)) && c->lighting.color_material) {

@@ -8,6 +8,7 @@
 namespace pineda {
 
 bool* texpipe_capability(Context* ctx, GLenum cap, uint32_t* dirty); // texenv.cpp
+bool* eval_capability(Context* ctx, GLenum cap); // eval.cpp: MAP1_*, MAP2_*, AUTO_NORMAL
 
 namespace {
 
@@ -27,6 +28,7 @@ bool* capability(Context* ctx, GLenum cap, uint32_t* dirty) {
     *dirty = kDirtyRasterMode;
     return flag;
   }
+  if (bool* flag = eval_capability(ctx, cap)) return flag; // no derived state depends on it
   switch (cap) {
   case GL_CULL_FACE: *dirty = kDirtyPolygon; return &ctx->cull_enabled;
   // Lighting (GL 2.1 §2.14.1, §2.14.3).

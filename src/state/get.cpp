@@ -18,6 +18,8 @@ int texture_get_values(Context* ctx, GLenum pname, double* v, bool* is_float); /
 // Pixel transfer, pixel map sizes, zoom and raster position (pixel.cpp): the number of values
 // written to v (0: not a pixel query) and their kind as the Kind enum's index.
 int pixel_query(const Context* ctx, GLenum pname, double* v, int* kind);
+// Evaluator limits and grids (eval.cpp), as pixel_query.
+int eval_query(const Context* ctx, GLenum pname, double* v, int* kind);
 
 namespace {
 
@@ -94,6 +96,10 @@ bool get_values(Context* ctx, GLenum pname, Values& out) {
     }
   }
   if (int kind = 0; (out.n = pixel_query(ctx, pname, out.v, &kind)) > 0) {
+    out.kind = static_cast<Kind>(kind);
+    return true;
+  }
+  if (int kind = 0; (out.n = eval_query(ctx, pname, out.v, &kind)) > 0) {
     out.kind = static_cast<Kind>(kind);
     return true;
   }
