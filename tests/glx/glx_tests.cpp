@@ -429,6 +429,34 @@ TEST_F(Glx, FrontBufferAfterBackOnlySwap) {
   EXPECT_EQ(g_error_count, 0);
 }
 
+// GL 2.1 §4.2.4: LOAD and ACCUM read the read buffer, RETURN writes every draw buffer.
+TEST_F(Glx, AccumulationWithFrontAndBack) {
+  GLXFBConfig c = choose({GLX_DOUBLEBUFFER, True, GLX_ACCUM_RED_SIZE, 16});
+  ASSERT_NE(c, nullptr);
+  Window win = make_window(c, 32, 32);
+  GLXContext ctx = glXCreateNewContext(dpy, c, GLX_RGBA_TYPE, nullptr, True);
+  ASSERT_TRUE(glXMakeCurrent(dpy, win, ctx));
+  glDrawBuffer(GL_FRONT);
+  clear_to(1, 0, 0);
+  glDrawBuffer(GL_BACK);
+  clear_to(0, 0, 1);
+  glReadBuffer(GL_FRONT);
+  glAccum(GL_LOAD, 1.0f); // red, from the front buffer
+  glReadBuffer(GL_BACK);
+  glAccum(GL_ACCUM, 1.0f); // plus blue, from the back buffer
+  glDrawBuffer(GL_FRONT_AND_BACK);
+  glAccum(GL_RETURN, 1.0f);
+  glFinish();
+  EXPECT_EQ(gl_pixel(5, 5), 0xff00fful);
+  glReadBuffer(GL_FRONT);
+  EXPECT_EQ(gl_pixel(5, 5), 0xff00fful);
+  EXPECT_EQ(x_pixel(win, 5, 5), 0xff00fful);
+  EXPECT_EQ(glGetError(), static_cast<GLenum>(GL_NO_ERROR));
+  ASSERT_TRUE(glXMakeCurrent(dpy, None, nullptr));
+  glXDestroyContext(dpy, ctx);
+  EXPECT_EQ(g_error_count, 0);
+}
+
 TEST_F(Glx, GlxWindowAndSingleBuffer) {
   GLXFBConfig c = choose({GLX_DOUBLEBUFFER, False});
   ASSERT_NE(c, nullptr);
