@@ -2,6 +2,9 @@
 // window-system layers that give a context a front and a back buffer.
 #pragma once
 
+#include <cstdint>
+#include <vector>
+
 #include "core/context.h"
 #include "geometry/geometry.h"
 #include "state/select.h"
@@ -13,23 +16,34 @@ namespace pineda {
 // nothing for a framebuffer with a single colour buffer.
 void select_color_buffers(Context* ctx);
 
+// The depth and stencil values a FRONT_AND_BACK pass may change, kept so that the next pass
+// starts from the same values.
+struct DepthStencilSnapshot {
+  std::vector<uint32_t> depth;
+  std::vector<uint8_t> stencil;
+  void save(const Context* ctx);
+  void restore(Context* ctx) const;
+};
+
 // Runs `draw` (a command that rasterizes fragments through ctx->fb and ctx->raster) once per
-// draw buffer. With FRONT_AND_BACK on a double-buffered drawable it first draws into the
-// second buffer with depth, stencil and sample-count updates off, so that both passes see the
-// same depth and stencil values and the final pass alone updates them.
+// draw buffer (GL 2.1 §4.2.1). With FRONT_AND_BACK on a double-buffered drawable it first
+// draws into the second buffer and then puts the depth and stencil buffers back, so that the
+// final pass, into the primary buffer, meets every fragment with the same depth and stencil
+// values and so makes the same decisions; samples are counted in the final pass only.
 template <typename F> void for_each_draw_buffer(Context* ctx, F&& draw) {
   Framebuffer& fb = ctx->fb;
   if (fb.color_also != nullptr && render_mode_is_render(ctx)) {
-    validate_state(ctx); // the passes change ctx->raster, so it must be current
-    RasterState saved = ctx->raster;
+    validate_state(ctx); // the pass changes ctx->raster, so it must be current
+    DepthStencilSnapshot snapshot;
+    snapshot.save(ctx);
+    const bool count = ctx->raster.count_samples;
     uint8_t* const primary = fb.color;
-    ctx->raster.depth_write = false;
-    ctx->raster.stencil_writemask = 0;
     ctx->raster.count_samples = false;
     fb.color = fb.color_also;
     draw();
     fb.color = primary;
-    ctx->raster = saved;
+    ctx->raster.count_samples = count;
+    snapshot.restore(ctx);
   }
   draw();
 }

@@ -408,10 +408,14 @@ TEST_F(Glx, FrontBufferAfterBackOnlySwap) {
   glEnable(GL_DEPTH_TEST);
   glClear(GL_DEPTH_BUFFER_BIT);
   clear_to(0, 0, 0);
+  // One draw: a white quad, then a red one behind it, hidden in both buffers.
+  glBegin(GL_QUADS);
   glColor3f(1, 1, 1);
-  glRectf(-1, -1, 1, 1); // z = 0
+  glVertex3f(-1, -1, 0);
+  glVertex3f(1, -1, 0);
+  glVertex3f(1, 1, 0);
+  glVertex3f(-1, 1, 0);
   glColor3f(1, 0, 0);
-  glBegin(GL_QUADS); // behind: hidden in both buffers
   glVertex3f(-1, -1, 0.5f);
   glVertex3f(1, -1, 0.5f);
   glVertex3f(1, 1, 0.5f);
