@@ -231,6 +231,9 @@ struct Context {
   // Called by glFlush and glFinish when set (GLX: a single-buffered window or a pixmap shows
   // what was rendered once the commands are flushed, GL 2.1 §5.5).
   void (*present_front)(Context*) = nullptr;
+  // Called when DrawBuffer/ReadBuffer select fb.front_color of a double-buffered drawable,
+  // before it is used (GLX: the front buffer's contents may still have to be fetched).
+  void (*front_selected)(Context*) = nullptr;
 
   // ---- errors (GL 2.1 §2.5): the first error is kept until glGetError ----
   GLenum error = GL_NO_ERROR;

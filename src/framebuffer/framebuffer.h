@@ -38,10 +38,29 @@ struct Framebuffer {
   int16_t* accum = nullptr;
   int accum_bits = 0; // 0 (none) or 16
 
+  // A drawable with a front and a back colour buffer (a double-buffered GLX window, GL 2.1
+  // table 4.4): both use color_format and color_stride. nullptr for a single colour buffer,
+  // which is then `color` alone. draw_read_buffer.cpp points `color` at the buffer drawing
+  // writes (the back one when both are drawn), `color_also` at the second buffer of
+  // FRONT_AND_BACK (else nullptr) and `read_color` at the read buffer (§4.3.2).
+  uint8_t* front_color = nullptr;
+  uint8_t* back_color = nullptr;
+  uint8_t* color_also = nullptr;
+  uint8_t* read_color = nullptr;
+
   uint8_t* color_row(int y) const { return color + static_cast<ptrdiff_t>(y) * color_stride; }
   uint32_t depth_max() const {
     return depth_bits >= 32 ? 0xffffffffu : ((1u << depth_bits) - 1u);
   }
 };
+
+// The framebuffer as seen by commands that read colour (ReadPixels, CopyPixels,
+// CopyTexImage, Accum): its colour is the read buffer.
+inline Framebuffer read_view(const Framebuffer& fb) {
+  Framebuffer r = fb;
+  if (fb.read_color != nullptr) r.color = fb.read_color;
+  r.color_also = nullptr;
+  return r;
+}
 
 } // namespace pineda

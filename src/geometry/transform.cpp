@@ -10,6 +10,7 @@
 #include "geometry/light_eval.h"
 #include "geometry/texcoord.h"
 #include "raster/raster.h"
+#include "state/draw_read_buffer.h"
 
 namespace pineda {
 
@@ -28,9 +29,10 @@ inline void add_secondary(float* attr, bool back) {
 
 } // namespace
 
-void draw_vertices(Context* ctx, GLenum mode, const InputVertex* in, size_t n,
-                   const uint32_t* indices, size_t count) {
-  if (ctx->fb.color == nullptr || n == 0) return;
+namespace {
+
+void draw_vertices_once(Context* ctx, GLenum mode, const InputVertex* in, size_t n,
+                        const uint32_t* indices, size_t count) {
   validate_state(ctx);
   const RasterState& rs = ctx->raster;
   const Viewport& vp = rs.viewport;
@@ -126,6 +128,15 @@ void draw_vertices(Context* ctx, GLenum mode, const InputVertex* in, size_t n,
   dc.fb = &fb;
   if (rs.count_samples) dc.samples_passed = &ctx->queries.samples_passed;
   draw_primitives(dc, mode, out.data(), indices, count);
+}
+
+} // namespace
+
+// GL 2.1 §4.2.1: with FRONT_AND_BACK the primitives reach both colour buffers.
+void draw_vertices(Context* ctx, GLenum mode, const InputVertex* in, size_t n,
+                   const uint32_t* indices, size_t count) {
+  if (ctx->fb.color == nullptr || n == 0) return;
+  for_each_draw_buffer(ctx, [&] { draw_vertices_once(ctx, mode, in, n, indices, count); });
 }
 
 } // namespace pineda

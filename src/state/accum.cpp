@@ -60,7 +60,17 @@ void GLAPIENTRY Accum(GLenum op, GLfloat value) {
   bool write[4];
   for (int k = 0; k < 4; ++k)
     write[k] = ctx->color_mask[k] && ctx->draw_buffer != GL_NONE;
+  // §4.2.4: LOAD and ACCUM read the read buffer; RETURN writes every draw buffer.
+  if (op != GL_RETURN) {
+    Framebuffer source = read_view(ctx->fb);
+    return accum_apply(source, op, value, accum_rect(ctx), write);
+  }
   accum_apply(ctx->fb, op, value, accum_rect(ctx), write);
+  if (ctx->fb.color_also != nullptr) {
+    Framebuffer second = ctx->fb;
+    second.color = second.color_also;
+    accum_apply(second, op, value, accum_rect(ctx), write);
+  }
 }
 
 void GLAPIENTRY ClearAccum(GLfloat r, GLfloat g, GLfloat b, GLfloat a) {

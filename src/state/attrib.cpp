@@ -14,6 +14,7 @@
 // (misc_save_attrib / misc_restore_attrib); EVAL_BIT and the evaluator enables by eval.cpp.
 #include "core/api_util.h"
 #include "dispatch.h"
+#include "state/draw_read_buffer.h"
 #include "state/raster_modes_hooks.h"
 
 #include <algorithm>
@@ -231,6 +232,7 @@ uint32_t restore(Context* c, const AttribFrame& f) {
     c->index_logic_op = cb.index_logic_op;
     c->logic_op = cb.logic_op;
     c->draw_buffer = cb.draw_buffer;
+    select_color_buffers(c); // src/state/draw_read_buffer.cpp
     copy_array(c->color_mask, cb.color_mask);
     copy_array(c->clear_color, cb.clear_color);
     dirty |= kDirtyFragment;
@@ -286,6 +288,7 @@ uint32_t restore(Context* c, const AttribFrame& f) {
   }
   if (m & GL_PIXEL_MODE_BIT) {
     c->read_buffer = f.read_buffer;
+    select_color_buffers(c);
     PixelTransfer& x = c->pixel_transfer;
     const AttribFrame::PixelMode& p = f.pixel;
     x.map_color = p.map_color;

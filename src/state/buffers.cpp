@@ -98,6 +98,12 @@ void GLAPIENTRY Clear(GLbitfield mask) {
   if (ctx->fb.depth != nullptr) m |= mask & GL_DEPTH_BUFFER_BIT;
   if (ctx->fb.stencil != nullptr) m |= mask & GL_STENCIL_BUFFER_BIT;
   if (m != 0) clear_buffers(ctx->fb, cs, m);
+  // GL 2.1 §4.2.3: with FRONT_AND_BACK both colour buffers are cleared.
+  if ((m & GL_COLOR_BUFFER_BIT) && ctx->fb.color_also != nullptr) {
+    Framebuffer second = ctx->fb;
+    second.color = second.color_also;
+    clear_buffers(second, cs, GL_COLOR_BUFFER_BIT);
+  }
 }
 
 void GLAPIENTRY ClearColor(GLclampf r, GLclampf g, GLclampf b, GLclampf a) {
@@ -144,7 +150,7 @@ void GLAPIENTRY ReadPixels(GLint x, GLint y, GLsizei w, GLsizei h, GLenum format
     return record_error(ctx, GL_INVALID_OPERATION, "glReadPixels");
   if (pixels == nullptr || w == 0 || h == 0 || ctx->fb.color == nullptr) return;
   if (read_pixels_transfer(ctx, x, y, w, h, format, type, pixels)) return;
-  read_pixels(ctx->fb, x, y, w, h, format, type, ctx->pack, pixels);
+  read_pixels(read_view(ctx->fb), x, y, w, h, format, type, ctx->pack, pixels);
 }
 
 } // namespace exec

@@ -11,6 +11,7 @@
 #include "geometry/geometry.h"
 #include "pixel/pixel_draw.h"
 #include "pixel/unpack.h"
+#include "state/draw_read_buffer.h"
 #include "state/select.h"
 
 namespace pineda {
@@ -63,7 +64,7 @@ void draw_color_strip(Context* ctx, const PixelPlacement& p, const float* rgba) 
   r.place = p;
   r.rgba = rgba;
   r.z = ctx->raster_pos.win[2];
-  draw_pixel_rect(ctx->raster, ctx->fb, r);
+  for_each_draw_buffer(ctx, [&] { draw_pixel_rect(ctx->raster, ctx->fb, r); });
 }
 
 void draw_depth_strip(Context* ctx, const PixelPlacement& p, const float* depth) {
@@ -71,7 +72,7 @@ void draw_depth_strip(Context* ctx, const PixelPlacement& p, const float* depth)
   r.place = p;
   r.depth = depth;
   std::copy(ctx->raster_pos.color, ctx->raster_pos.color + 4, r.color);
-  draw_pixel_rect(ctx->raster, ctx->fb, r);
+  for_each_draw_buffer(ctx, [&] { draw_pixel_rect(ctx->raster, ctx->fb, r); });
 }
 
 // The part of the w x h rectangle at (x, y) inside the framebuffer.
@@ -140,7 +141,7 @@ bool read_pixels_transfer(Context* ctx, int x, int y, int w, int h, GLenum forma
     pack_index(s.data(), iw, ih, 1, type, st, pixels);
   } else {
     std::vector<float> c(n * 4);
-    read_pixels(ctx->fb, in.x0, in.y0, iw, ih, GL_RGBA, GL_FLOAT, tight, c.data());
+    read_pixels(read_view(ctx->fb), in.x0, in.y0, iw, ih, GL_RGBA, GL_FLOAT, tight, c.data());
     transfer_rgba(xfer, c.data(), n);
     pack_rgba(c.data(), iw, ih, 1, format, type, st, pixels);
   }
@@ -237,8 +238,10 @@ void GLAPIENTRY Bitmap(GLsizei width, GLsizei height, GLfloat xorig, GLfloat yor
     if (ctx->lighting.enabled || ctx->lighting.color_sum)
       for (int c = 0; c < 3; ++c)
         color[c] += rp.color2[c];
-    draw_bitmap(ctx->raster, ctx->fb, corner(rp.win[0] - xorig + kEps),
-                corner(rp.win[1] - yorig + kEps), width, height, bits.data(), color, rp.win[2]);
+    for_each_draw_buffer(ctx, [&] {
+      draw_bitmap(ctx->raster, ctx->fb, corner(rp.win[0] - xorig + kEps),
+                  corner(rp.win[1] - yorig + kEps), width, height, bits.data(), color, rp.win[2]);
+    });
   }
   rp.win[0] += xmove;
   rp.win[1] += ymove;
@@ -280,7 +283,7 @@ void GLAPIENTRY CopyPixels(GLint x, GLint y, GLsizei width, GLsizei height, GLen
     draw_depth_strip(ctx, p, z.data());
   } else {
     std::vector<float> c(n * 4);
-    read_pixels(ctx->fb, in.x0, in.y0, iw, ih, GL_RGBA, GL_FLOAT, tight, c.data());
+    read_pixels(read_view(ctx->fb), in.x0, in.y0, iw, ih, GL_RGBA, GL_FLOAT, tight, c.data());
     if (rgba_transfer_active(xfer)) transfer_rgba(xfer, c.data(), n);
     draw_color_strip(ctx, p, c.data());
   }

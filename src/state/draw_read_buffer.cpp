@@ -1,8 +1,11 @@
 // glDrawBuffer (GL 2.1 §4.2.1) and glReadBuffer (§4.3.2): which of the context's colour
 // buffers drawing writes and glReadPixels reads. The buffers a context has are
 // Context::color_buffers, set by the window-system layer.
+#include <algorithm>
+
 #include "core/api_util.h"
 #include "dispatch.h"
+#include "state/draw_read_buffer.h"
 
 namespace pineda {
 
@@ -58,6 +61,42 @@ bool read_buffer_named(GLenum src, uint32_t* buffer) {
 
 } // namespace
 
+void select_color_buffers(Context* ctx) {
+  Framebuffer& fb = ctx->fb;
+  if (fb.front_color == nullptr || fb.back_color == nullptr) return;
+  uint32_t set = 0;
+  if (ctx->draw_buffer == GL_NONE || !draw_buffer_set(ctx->draw_buffer, &set)) set = kBack;
+  set &= ctx->color_buffers;
+  // GL 2.1 §4.2.1: fragments go to every buffer the draw buffer indicates; the back buffer is
+  // the primary target so that BACK-only drawing costs one pass.
+  const bool front = (set & kFront) != 0, back = (set & kBack) != 0;
+  fb.color = back || !front ? fb.back_color : fb.front_color;
+  fb.color_also = front && back ? fb.front_color : nullptr;
+  uint32_t rb = 0;
+  if (!read_buffer_named(ctx->read_buffer, &rb)) rb = kColorBufferBackLeft;
+  fb.read_color = (rb & kFront) != 0 ? fb.front_color : fb.back_color;
+  if ((front || fb.read_color == fb.front_color) && ctx->front_selected != nullptr)
+    ctx->front_selected(ctx);
+  mark_dirty(ctx, kDirtyFramebuffer);
+}
+
+void DepthStencilSnapshot::save(const Context* ctx) {
+  const Framebuffer& fb = ctx->fb;
+  const RasterState& rs = ctx->raster;
+  const size_t n = static_cast<size_t>(fb.width) * static_cast<size_t>(fb.height);
+  // Only buffers the pass can write: depth with the test and DEPTH_WRITEMASK on, stencil
+  // with the test on and a non-zero write mask (GL 2.1 §4.1.5, §4.1.6, §4.2.2).
+  if (fb.depth != nullptr && rs.depth_test && rs.depth_write) depth.assign(fb.depth, fb.depth + n);
+  if (fb.stencil != nullptr && rs.stencil_test && (rs.stencil_writemask & 0xffu) != 0)
+    stencil.assign(fb.stencil, fb.stencil + n);
+}
+
+void DepthStencilSnapshot::restore(Context* ctx) const {
+  Framebuffer& fb = ctx->fb;
+  if (!depth.empty()) std::copy(depth.begin(), depth.end(), fb.depth);
+  if (!stencil.empty()) std::copy(stencil.begin(), stencil.end(), fb.stencil);
+}
+
 namespace exec {
 
 void GLAPIENTRY DrawBuffer(GLenum buf) {
@@ -72,6 +111,7 @@ void GLAPIENTRY DrawBuffer(GLenum buf) {
       return record_error(ctx, GL_INVALID_OPERATION, "glDrawBuffer", buf);
   }
   ctx->draw_buffer = buf;
+  select_color_buffers(ctx);
   mark_dirty(ctx, kDirtyFragment);
 }
 
@@ -84,6 +124,7 @@ void GLAPIENTRY ReadBuffer(GLenum src) {
   if ((buffer & ctx->color_buffers) == 0)
     return record_error(ctx, GL_INVALID_OPERATION, "glReadBuffer", src);
   ctx->read_buffer = src;
+  select_color_buffers(ctx);
 }
 
 } // namespace exec

@@ -25,7 +25,8 @@ void read_framebuffer(const Context* ctx, int x, int y, int w, int h, bool depth
   std::fill(out, out + n * (depth ? 1 : 4), 0.0f);
   if (ctx->fb.color == nullptr || w == 0 || h == 0) return;
   PixelStore pack; // tightly packed floats
-  read_pixels(ctx->fb, x, y, w, h, depth ? GL_DEPTH_COMPONENT : GL_RGBA, GL_FLOAT, pack, out);
+  read_pixels(read_view(ctx->fb), x, y, w, h, depth ? GL_DEPTH_COMPONENT : GL_RGBA, GL_FLOAT, pack,
+              out);
   if (depth)
     transfer_depth(ctx->pixel_transfer, out, n);
   else

@@ -246,6 +246,221 @@ TEST_F(Glx, DoubleBufferedWindow) {
   EXPECT_EQ(g_error_count, 0);
 }
 
+// GL pixel (x, y) of the current read buffer as 0xRRGGBB.
+unsigned long gl_pixel(int x, int y) {
+  GLubyte p[4] = {};
+  glReadPixels(x, y, 1, 1, GL_RGBA, GL_UNSIGNED_BYTE, p);
+  return (static_cast<unsigned long>(p[0]) << 16) | (static_cast<unsigned long>(p[1]) << 8) | p[2];
+}
+
+void clear_to(float r, float g, float b) {
+  glClearColor(r, g, b, 1);
+  glClear(GL_COLOR_BUFFER_BIT);
+}
+
+// A rectangle over window pixels [x0, x1) x [y0, y1) (GL coordinates, projection identity).
+void fill_rect(float r, float g, float b, int x0, int y0, int x1, int y1, int w, int h) {
+  glColor3f(r, g, b);
+  glRectf(2.0f * x0 / w - 1, 2.0f * y0 / h - 1, 2.0f * x1 / w - 1, 2.0f * y1 / h - 1);
+}
+
+// GL 2.1 §4.2.1, §4.3.2, GLX 1.4 §3.3.10: a double-buffered window has a front and a back
+// buffer, each drawable and readable; the swap makes the back buffer's contents the front's.
+TEST_F(Glx, FrontAndBackBuffers) {
+  GLXFBConfig c = choose({GLX_DOUBLEBUFFER, True});
+  ASSERT_NE(c, nullptr);
+  Window win = make_window(c, 64, 48);
+  GLXContext ctx = glXCreateNewContext(dpy, c, GLX_RGBA_TYPE, nullptr, True);
+  ASSERT_TRUE(glXMakeCurrent(dpy, win, ctx));
+  glXSwapIntervalEXT(dpy, win, 0);
+  GLint buffer = 0;
+  glGetIntegerv(GL_READ_BUFFER, &buffer);
+  EXPECT_EQ(buffer, GL_BACK);
+
+  // Back red, swap: the window and the front buffer are red.
+  clear_to(1, 0, 0);
+  glXSwapBuffers(dpy, win);
+  EXPECT_EQ(x_pixel(win, 10, 10), 0xff0000ul);
+  glReadBuffer(GL_FRONT);
+  EXPECT_EQ(gl_pixel(10, 10), 0xff0000ul);
+
+  // Drawing into the back buffer leaves the front (and the window) alone.
+  glDrawBuffer(GL_BACK);
+  clear_to(0, 1, 0);
+  glFinish();
+  EXPECT_EQ(gl_pixel(10, 10), 0xff0000ul);
+  EXPECT_EQ(x_pixel(win, 10, 10), 0xff0000ul);
+  glReadBuffer(GL_BACK);
+  EXPECT_EQ(gl_pixel(10, 10), 0x00ff00ul);
+
+  // Drawing into the front buffer shows at glFlush, without a swap; the back keeps green.
+  glDrawBuffer(GL_FRONT);
+  fill_rect(0, 0, 1, 0, 0, 32, 48, 64, 48);
+  glFlush();
+  EXPECT_EQ(x_pixel(win, 10, 10), 0x0000fful);
+  EXPECT_EQ(x_pixel(win, 50, 10), 0xff0000ul);
+  EXPECT_EQ(gl_pixel(10, 10), 0x00ff00ul);
+  glReadBuffer(GL_FRONT_LEFT);
+  EXPECT_EQ(gl_pixel(10, 10), 0x0000fful);
+  EXPECT_EQ(gl_pixel(50, 10), 0xff0000ul);
+
+  // The swap shows the back buffer; the back buffer keeps its contents (Mesa's behaviour).
+  glXSwapBuffers(dpy, win);
+  EXPECT_EQ(x_pixel(win, 10, 10), 0x00ff00ul);
+  glReadBuffer(GL_FRONT);
+  EXPECT_EQ(gl_pixel(10, 10), 0x00ff00ul);
+  glReadBuffer(GL_BACK_LEFT);
+  EXPECT_EQ(gl_pixel(10, 10), 0x00ff00ul);
+
+  // FRONT_AND_BACK: clears and primitives reach both buffers; LEFT is both too.
+  glDrawBuffer(GL_FRONT_AND_BACK);
+  clear_to(1, 1, 0);
+  fill_rect(1, 0, 1, 0, 0, 16, 16, 64, 48);
+  glFlush();
+  EXPECT_EQ(x_pixel(win, 40, 10), 0xffff00ul);
+  EXPECT_EQ(x_pixel(win, 5, 42), 0xff00fful);
+  for (GLenum rb : {GL_FRONT, GL_BACK, GL_LEFT}) {
+    glReadBuffer(rb);
+    EXPECT_EQ(gl_pixel(40, 40), 0xffff00ul) << rb;
+    EXPECT_EQ(gl_pixel(5, 5), 0xff00fful) << rb;
+  }
+  glDrawBuffer(GL_LEFT);
+  fill_rect(0, 1, 1, 32, 32, 64, 48, 64, 48);
+  glReadBuffer(GL_FRONT);
+  EXPECT_EQ(gl_pixel(40, 40), 0x00fffful);
+  glReadBuffer(GL_BACK);
+  EXPECT_EQ(gl_pixel(40, 40), 0x00fffful);
+
+  // CopyPixels reads the read buffer and writes the draw buffer.
+  glDrawBuffer(GL_BACK);
+  clear_to(0, 0, 0);
+  glDrawBuffer(GL_FRONT);
+  clear_to(1, 1, 1);
+  glReadBuffer(GL_FRONT);
+  glDrawBuffer(GL_BACK);
+  glRasterPos2f(0, 0); // window (32, 24)
+  glCopyPixels(0, 0, 8, 8, GL_COLOR);
+  glReadBuffer(GL_BACK);
+  EXPECT_EQ(gl_pixel(34, 26), 0xfffffful);
+  EXPECT_EQ(gl_pixel(10, 10), 0x000000ul);
+
+  // glGet and glPushAttrib/glPopAttrib keep the selection.
+  glDrawBuffer(GL_FRONT);
+  glPushAttrib(GL_COLOR_BUFFER_BIT | GL_PIXEL_MODE_BIT);
+  glDrawBuffer(GL_BACK);
+  glReadBuffer(GL_FRONT);
+  glPopAttrib();
+  glGetIntegerv(GL_DRAW_BUFFER, &buffer);
+  EXPECT_EQ(buffer, GL_FRONT);
+  glGetIntegerv(GL_READ_BUFFER, &buffer);
+  EXPECT_EQ(buffer, GL_BACK);
+  clear_to(1, 0, 0);
+  glReadBuffer(GL_FRONT);
+  EXPECT_EQ(gl_pixel(1, 1), 0xff0000ul);
+  glReadBuffer(GL_BACK);
+  EXPECT_EQ(gl_pixel(1, 1), 0x000000ul);
+
+  // Buffers the window does not have (GL 2.1 §4.2.1, §4.3.2).
+  EXPECT_EQ(glGetError(), static_cast<GLenum>(GL_NO_ERROR));
+  for (GLenum b : {GL_RIGHT, GL_FRONT_RIGHT, GL_BACK_RIGHT, GL_AUX0}) {
+    glDrawBuffer(b);
+    EXPECT_EQ(glGetError(), static_cast<GLenum>(GL_INVALID_OPERATION)) << b;
+    glReadBuffer(b);
+    EXPECT_EQ(glGetError(), static_cast<GLenum>(GL_INVALID_OPERATION)) << b;
+  }
+  glReadBuffer(GL_FRONT_AND_BACK);
+  EXPECT_EQ(glGetError(), static_cast<GLenum>(GL_INVALID_ENUM));
+  glGetIntegerv(GL_DRAW_BUFFER, &buffer);
+  EXPECT_EQ(buffer, GL_FRONT);
+
+  ASSERT_TRUE(glXMakeCurrent(dpy, None, nullptr));
+  glXDestroyContext(dpy, ctx);
+  EXPECT_EQ(g_error_count, 0);
+}
+
+// A swap made while only the back buffer is in use leaves the front buffer to the window;
+// selecting it later reads what the swap showed, not what was drawn since.
+TEST_F(Glx, FrontBufferAfterBackOnlySwap) {
+  GLXFBConfig c = choose({GLX_DOUBLEBUFFER, True, GLX_DEPTH_SIZE, 24});
+  ASSERT_NE(c, nullptr);
+  Window win = make_window(c, 64, 48);
+  GLXContext ctx = glXCreateNewContext(dpy, c, GLX_RGBA_TYPE, nullptr, True);
+  ASSERT_TRUE(glXMakeCurrent(dpy, win, ctx));
+  glXSwapIntervalEXT(dpy, win, 0);
+  draw_scene();
+  glXSwapBuffers(dpy, win);
+  clear_to(0, 1, 0);
+  glReadBuffer(GL_FRONT);
+  EXPECT_EQ(gl_pixel(32, 24), 0xff0000ul);
+  EXPECT_EQ(gl_pixel(1, 1), 0x0000fful);
+  // glCopyTexImage2D reads the read buffer too.
+  GLuint tex = 0;
+  glGenTextures(1, &tex);
+  glBindTexture(GL_TEXTURE_2D, tex);
+  glCopyTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA, 0, 0, 4, 4, 0);
+  GLubyte texel[4 * 16] = {};
+  glGetTexImage(GL_TEXTURE_2D, 0, GL_RGBA, GL_UNSIGNED_BYTE, texel);
+  EXPECT_EQ(texel[0], 0);
+  EXPECT_EQ(texel[2], 255);
+  glDeleteTextures(1, &tex);
+  // Depth testing with FRONT_AND_BACK: both buffers see the same depth test results.
+  glDrawBuffer(GL_FRONT_AND_BACK);
+  glEnable(GL_DEPTH_TEST);
+  glClear(GL_DEPTH_BUFFER_BIT);
+  clear_to(0, 0, 0);
+  // One draw: a white quad, then a red one behind it, hidden in both buffers.
+  glBegin(GL_QUADS);
+  glColor3f(1, 1, 1);
+  glVertex3f(-1, -1, 0);
+  glVertex3f(1, -1, 0);
+  glVertex3f(1, 1, 0);
+  glVertex3f(-1, 1, 0);
+  glColor3f(1, 0, 0);
+  glVertex3f(-1, -1, 0.5f);
+  glVertex3f(1, -1, 0.5f);
+  glVertex3f(1, 1, 0.5f);
+  glVertex3f(-1, 1, 0.5f);
+  glEnd();
+  for (GLenum rb : {GL_FRONT, GL_BACK}) {
+    glReadBuffer(rb);
+    EXPECT_EQ(gl_pixel(20, 20), 0xfffffful) << rb;
+  }
+  EXPECT_EQ(glGetError(), static_cast<GLenum>(GL_NO_ERROR));
+  ASSERT_TRUE(glXMakeCurrent(dpy, None, nullptr));
+  // Unbinding flushes front-buffer rendering to the window.
+  EXPECT_EQ(x_pixel(win, 20, 20), 0xfffffful);
+  glXDestroyContext(dpy, ctx);
+  EXPECT_EQ(g_error_count, 0);
+}
+
+// GL 2.1 §4.2.4: LOAD and ACCUM read the read buffer, RETURN writes every draw buffer.
+TEST_F(Glx, AccumulationWithFrontAndBack) {
+  GLXFBConfig c = choose({GLX_DOUBLEBUFFER, True, GLX_ACCUM_RED_SIZE, 16});
+  ASSERT_NE(c, nullptr);
+  Window win = make_window(c, 32, 32);
+  GLXContext ctx = glXCreateNewContext(dpy, c, GLX_RGBA_TYPE, nullptr, True);
+  ASSERT_TRUE(glXMakeCurrent(dpy, win, ctx));
+  glDrawBuffer(GL_FRONT);
+  clear_to(1, 0, 0);
+  glDrawBuffer(GL_BACK);
+  clear_to(0, 0, 1);
+  glReadBuffer(GL_FRONT);
+  glAccum(GL_LOAD, 1.0f); // red, from the front buffer
+  glReadBuffer(GL_BACK);
+  glAccum(GL_ACCUM, 1.0f); // plus blue, from the back buffer
+  glDrawBuffer(GL_FRONT_AND_BACK);
+  glAccum(GL_RETURN, 1.0f);
+  glFinish();
+  EXPECT_EQ(gl_pixel(5, 5), 0xff00fful);
+  glReadBuffer(GL_FRONT);
+  EXPECT_EQ(gl_pixel(5, 5), 0xff00fful);
+  EXPECT_EQ(x_pixel(win, 5, 5), 0xff00fful);
+  EXPECT_EQ(glGetError(), static_cast<GLenum>(GL_NO_ERROR));
+  ASSERT_TRUE(glXMakeCurrent(dpy, None, nullptr));
+  glXDestroyContext(dpy, ctx);
+  EXPECT_EQ(g_error_count, 0);
+}
+
 TEST_F(Glx, GlxWindowAndSingleBuffer) {
   GLXFBConfig c = choose({GLX_DOUBLEBUFFER, False});
   ASSERT_NE(c, nullptr);
@@ -258,6 +473,18 @@ TEST_F(Glx, GlxWindowAndSingleBuffer) {
   GLint buffer = 0;
   glGetIntegerv(GL_DRAW_BUFFER, &buffer);
   EXPECT_EQ(buffer, GL_FRONT);
+  // A single-buffered window has no back buffer (GL 2.1 §4.2.1, §4.3.2).
+  for (GLenum b : {GL_BACK, GL_BACK_LEFT, GL_RIGHT, GL_AUX0}) {
+    glDrawBuffer(b);
+    EXPECT_EQ(glGetError(), static_cast<GLenum>(GL_INVALID_OPERATION)) << b;
+    glReadBuffer(b);
+    EXPECT_EQ(glGetError(), static_cast<GLenum>(GL_INVALID_OPERATION)) << b;
+  }
+  // FRONT_AND_BACK and LEFT name the front buffer, which exists.
+  glDrawBuffer(GL_FRONT_AND_BACK);
+  glDrawBuffer(GL_LEFT);
+  glDrawBuffer(GL_FRONT);
+  EXPECT_EQ(glGetError(), static_cast<GLenum>(GL_NO_ERROR));
   draw_scene();
   // Single-buffered: glFinish shows the rendering without a swap.
   glFinish();

@@ -45,18 +45,36 @@ bool presents_on_flush(const Surface& s) {
   return s.kind != SurfaceKind::Pbuffer && !has_back_buffer(s);
 }
 
-// glFlush / glFinish: a single-buffered window or a pixmap shows what was rendered.
+// What glFlush shows of ctx's draw drawable: a single-buffered window or a pixmap shows what
+// was rendered, a double-buffered window what was rendered into its front buffer (GL 2.1
+// §5.5); back-buffer rendering waits for the swap.
+void flush_front(GlxContext* ctx) {
+  if (ctx->draw == nullptr) return;
+  if (presents_on_flush(*ctx->draw))
+    present(*ctx->draw);
+  else if (draws_front(*ctx))
+    present_front(*ctx->draw);
+}
+
+// glFlush / glFinish.
 void present_front_hook(Context* gl) {
   std::lock_guard<std::mutex> lock(registry_mutex());
+  flush_front(static_cast<GlxContext*>(gl));
+}
+
+// DrawBuffer/ReadBuffer chose the front buffer: fetch its contents if a swap left them to the
+// window.
+void front_selected_hook(Context* gl) {
+  std::lock_guard<std::mutex> lock(registry_mutex());
   auto* ctx = static_cast<GlxContext*>(gl);
-  if (ctx->draw != nullptr && presents_on_flush(*ctx->draw)) present(*ctx->draw);
+  if (ctx->draw != nullptr && ctx->draw->front_stale) pull_front(*ctx->draw);
 }
 
 // Ends ctx's binding on this thread: pending front-buffer rendering is flushed first
 // (§3.3.7: the previous context is flushed when it is released).
 void unbind(GlxContext* ctx) {
   if (ctx->draw != nullptr) {
-    if (presents_on_flush(*ctx->draw)) present(*ctx->draw);
+    flush_front(ctx);
     auto& bound = ctx->draw->bound;
     bound.erase(std::remove(bound.begin(), bound.end(), ctx), bound.end());
   }
@@ -187,20 +205,22 @@ Bool make_current(Display* dpy, GLXDrawable draw, GLXDrawable read, GLXContext h
   ctx->read_id = read;
   // GL rendering must see what X drew into a pixmap (§3.3.9 glXWaitX semantics on binding).
   if (s->kind == SurfaceKind::Pixmap) pull_pixmap(*s);
-  attach(ctx, *s);
   // GL 2.1 §2.11.1: the viewport starts as the whole drawable when first made current.
   if (!ctx->ever_current) {
     ctx->ever_current = true;
     ctx->vp_w = s->width;
     ctx->vp_h = s->height;
     mark_dirty(ctx, kDirtyViewport);
-    // GL 2.1 §4.2.1, §4.3.2: BACK when there is a back buffer, FRONT otherwise.
+    // GL 2.1 §4.2.1, §4.3.2: BACK when there is a back buffer, FRONT otherwise. Set before
+    // attach, which selects the buffers they name.
     const GLenum initial = has_back_buffer(*s) ? GL_BACK : GL_FRONT;
     ctx->draw_buffer = initial;
     ctx->read_buffer = initial;
     mark_dirty(ctx, kDirtyFragment);
   }
+  attach(ctx, *s);
   ctx->present_front = &present_front_hook;
+  ctx->front_selected = &front_selected_hook;
   ctx->is_current = true;
   ctx->thread = std::this_thread::get_id();
   t_ctx = ctx;
@@ -476,6 +496,17 @@ GLX_EXPORT void glXSwapBuffers(Display* dpy, GLXDrawable drawable) {
       std::this_thread::sleep_until(due);
       api.lock.lock();
     }
+    // The back buffer's contents become the front's; the copy keeps the back buffer as it was
+    // (its contents are undefined after the swap). Skipped while no context uses the front
+    // buffer: the window then holds it, fetched when a context selects it.
+    bool front_used = false;
+    for (GlxContext* c : s->bound) front_used = front_used || uses_front(*c);
+    if (front_used && !s->front.empty()) {
+      std::memcpy(s->front.data(), s->image->data, s->front.size());
+      s->front_stale = false;
+    } else {
+      s->front_stale = true;
+    }
     present(*s);
     // The window may have been resized: the next frame renders at its new size (the back
     // buffer's contents are undefined after a swap, so nothing is lost).
@@ -489,7 +520,7 @@ GLX_EXPORT void glXWaitGL(void) {
   ApiLock api;
   // GL rendering is finished when the call returns; what remains is to show it to X.
   GlxContext* c = current_glx();
-  if (c != nullptr && c->draw != nullptr && presents_on_flush(*c->draw)) present(*c->draw);
+  if (c != nullptr) flush_front(c);
 }
 
 GLX_EXPORT void glXWaitX(void) {

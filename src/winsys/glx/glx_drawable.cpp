@@ -4,6 +4,7 @@
 #include <cstdlib>
 #include <new>
 
+#include "state/draw_read_buffer.h"
 #include "winsys/glx/glx_internal.h"
 
 #define GLX_EXPORT extern "C" __attribute__((visibility("default")))
@@ -132,6 +133,11 @@ bool allocate_buffers(Surface& s, int width, int height) {
         }
         s.image = img;
       }
+      // A resize leaves the front buffer undefined: it is again what the window shows.
+      if (has_back_buffer(s))
+        s.front.assign(
+            static_cast<size_t>(s.image->bytes_per_line) * static_cast<size_t>(height), 0);
+      s.front_stale = true;
     }
     s.depth.assign(s.config->depth_bits > 0 ? pixels : 0, 0);
     s.stencil.assign(s.config->stencil_bits > 0 ? pixels : 0, 0);
@@ -178,11 +184,36 @@ void attach(GlxContext* ctx, Surface& s) {
   fb.stencil = s.stencil.empty() ? nullptr : s.stencil.data();
   fb.accum_bits = s.config->accum_bits;
   fb.accum = s.accum.empty() ? nullptr : s.accum.data();
-  // GL 2.1 table 4.4. Pineda keeps one colour buffer per drawable: for a double-buffered
-  // window or pbuffer it is the back buffer (the front one is what the last swap showed and
-  // cannot be drawn to or read yet); a pixmap's is its front buffer (§3.3.5: swaps are ignored).
-  ctx->color_buffers = has_back_buffer(s) ? kColorBufferBackLeft : kColorBufferFrontLeft;
+  // GL 2.1 table 4.4: a double-buffered window has a front and a back buffer (`image` is the
+  // back one, presented by swaps); a pbuffer only its back buffer (it is never shown); a
+  // single-buffered window or a pixmap its front buffer (§3.3.5: swaps are ignored).
+  fb.front_color = fb.back_color = fb.color_also = fb.read_color = nullptr;
+  if (s.kind == SurfaceKind::Window && has_back_buffer(s) && !s.front.empty()) {
+    ctx->color_buffers = kColorBufferFrontLeft | kColorBufferBackLeft;
+    fb.back_color = fb.color;
+    fb.front_color = s.front.data() + (fb.color - reinterpret_cast<uint8_t*>(s.image->data));
+    // The registry lock is held here, so the hook (which takes it) is not run; the front
+    // buffer is fetched directly instead.
+    auto* const hook = ctx->front_selected;
+    ctx->front_selected = nullptr;
+    select_color_buffers(ctx);
+    ctx->front_selected = hook;
+    if (s.front_stale && uses_front(*ctx)) pull_front(s);
+  } else {
+    ctx->color_buffers = has_back_buffer(s) ? kColorBufferBackLeft : kColorBufferFrontLeft;
+  }
   mark_dirty(ctx, kDirtyFramebuffer);
+}
+
+bool draws_front(const GlxContext& ctx) {
+  const Framebuffer& fb = ctx.fb;
+  return fb.front_color != nullptr &&
+         (fb.color == fb.front_color || fb.color_also == fb.front_color);
+}
+
+bool uses_front(const GlxContext& ctx) {
+  const Framebuffer& fb = ctx.fb;
+  return draws_front(ctx) || (fb.front_color != nullptr && fb.read_color == fb.front_color);
 }
 
 bool has_back_buffer(const Surface& s) {

@@ -77,6 +77,13 @@ struct Surface {
   XShmSegmentInfo shm_info{};
   bool shm = false;
   std::vector<uint8_t> memory;
+  // The front colour buffer of a double-buffered window (GLX 1.4 §3.3.10), rows laid out as
+  // in `image`, which is the back buffer. While `front_stale`, the front buffer's contents are
+  // what the window shows (the last swap) and are fetched from it when GL next uses them; a
+  // swap copies the back buffer in only when a context draws into or reads the front, so
+  // back-buffer-only rendering costs no copy.
+  std::vector<uint8_t> front;
+  bool front_stale = true;
   std::vector<uint32_t> depth;
   std::vector<uint8_t> stencil;
   std::vector<int16_t> accum; // RGBA per pixel when the config has an accumulation buffer
@@ -197,6 +204,11 @@ void set_swap_interval(DisplayState* ds, GLXDrawable drawable, int interval);
 // Presentation (glx_present.cpp).
 void present(Surface& s);         // our colour buffer -> window or pixmap
 void pull_pixmap(Surface& s);     // pixmap contents -> our colour buffer (X rendering seen by GL)
+void present_front(Surface& s);   // a double-buffered window's front buffer -> window
+void pull_front(Surface& s);      // window contents -> a double-buffered window's front buffer
+// Whether ctx draws into or reads the front buffer of its double-buffered window.
+bool uses_front(const GlxContext& ctx);
+bool draws_front(const GlxContext& ctx); // draws into it (shown at glFlush)
 bool shm_create(Surface& s, int width, int height);
 void shm_destroy(Surface& s);
 // When the next swap of `s` may happen (GLX_EXT_swap_control pacing); records it.

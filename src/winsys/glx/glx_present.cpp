@@ -173,8 +173,29 @@ void present(Surface& s) {
   });
 }
 
-void pull_pixmap(Surface& s) {
-  if (s.kind != SurfaceKind::Pixmap || s.image == nullptr || s.ds == nullptr) return;
+void present_front(Surface& s) {
+  if (s.kind != SurfaceKind::Window || s.front.empty() || s.image == nullptr || s.ds == nullptr)
+    return;
+  Display* dpy = s.ds->dpy;
+  const Config& c = *s.config;
+  const auto w = static_cast<unsigned>(s.width), h = static_cast<unsigned>(s.height);
+  // An image header over the front buffer's memory, which has the back image's layout.
+  XImage* img = XCreateImage(dpy, c.visual, static_cast<unsigned>(c.visual_depth), ZPixmap, 0,
+                             reinterpret_cast<char*>(s.front.data()), w, h, 32,
+                             s.image->bytes_per_line);
+  if (img == nullptr) return;
+  trap_errors(dpy, [&] {
+    if (s.gc == nullptr) s.gc = XCreateGC(dpy, s.x_drawable, 0, nullptr);
+    XPutImage(dpy, s.x_drawable, s.gc, img, 0, 0, 0, 0, w, h);
+  });
+  img->data = nullptr; // the memory is s.front's
+  XDestroyImage(img);
+}
+
+namespace {
+
+// Copies what the X drawable shows into dst_base (rows laid out as s.image).
+void pull_into(Surface& s, uint8_t* dst_base) {
   Display* dpy = s.ds->dpy;
   XImage* got = nullptr;
   const int err = trap_errors(dpy, [&] {
@@ -187,7 +208,7 @@ void pull_pixmap(Surface& s) {
   }
   if (got->bits_per_pixel == 32 && got->byte_order == s.image->byte_order) {
     // Only the visual's colour bits come from X; the rest of the word is the alpha channel,
-    // which a depth-24 pixmap does not store, so GL's alpha survives.
+    // which a depth-24 drawable does not store, so GL's alpha survives.
     const uint32_t rgb = static_cast<uint32_t>(s.config->rgb_mask);
     uint32_t keep = ~rgb, take = rgb;
     if (s.image->byte_order != (__BYTE_ORDER__ == __ORDER_LITTLE_ENDIAN__ ? LSBFirst : MSBFirst)) {
@@ -195,12 +216,27 @@ void pull_pixmap(Surface& s) {
       take = __builtin_bswap32(take);
     }
     for (int y = 0; y < s.height; ++y) {
-      auto* dst = reinterpret_cast<uint32_t*>(s.image->data + y * s.image->bytes_per_line);
+      auto* dst = reinterpret_cast<uint32_t*>(dst_base + y * s.image->bytes_per_line);
       const auto* src = reinterpret_cast<const uint32_t*>(got->data + y * got->bytes_per_line);
       for (int x = 0; x < s.width; ++x) dst[x] = (dst[x] & keep) | (src[x] & take);
     }
   }
   XDestroyImage(got);
+}
+
+} // namespace
+
+void pull_pixmap(Surface& s) {
+  if (s.kind != SurfaceKind::Pixmap || s.image == nullptr || s.ds == nullptr) return;
+  pull_into(s, reinterpret_cast<uint8_t*>(s.image->data));
+}
+
+// GLX 1.4 §3.3.10: after a swap the front buffer holds what the window shows.
+void pull_front(Surface& s) {
+  s.front_stale = false;
+  if (s.kind != SurfaceKind::Window || s.front.empty() || s.image == nullptr || s.ds == nullptr)
+    return;
+  pull_into(s, s.front.data());
 }
 
 // GLX_EXT_swap_control: without a real vertical retrace, swaps are paced to a virtual 60 Hz
