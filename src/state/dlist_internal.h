@@ -37,6 +37,13 @@ struct PrimBlock final : DlistObject {
 
 using ReplayFn = void (*)(const void* args);
 
+// The current context when it is compiling a display list, else nullptr (then a saver only
+// executes its command).
+inline Context* compiling_list() {
+  Context* ctx = current_context();
+  return ctx != nullptr && ctx->dlist.list != nullptr ? ctx : nullptr;
+}
+
 // Whether the list being compiled also executes its commands (COMPILE_AND_EXECUTE).
 inline bool list_executes(const Context* ctx) {
   return ctx->dlist.mode == GL_COMPILE_AND_EXECUTE;

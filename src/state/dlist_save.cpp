@@ -18,12 +18,6 @@ namespace pineda {
 
 namespace {
 
-// The context whose list is being compiled, or nullptr (then the saver only executes).
-Context* compiling() {
-  Context* ctx = current_context();
-  return ctx != nullptr && ctx->dlist.list != nullptr ? ctx : nullptr;
-}
-
 // Whether a saver must also execute its command: COMPILE_AND_EXECUTE, or no list at all.
 bool executes(const Context* ctx) {
   return ctx == nullptr || list_executes(ctx);
@@ -32,7 +26,7 @@ bool executes(const Context* ctx) {
 // ---- vertices and current attributes ----------------------------------------------------
 
 void attrib(uint32_t bit, float a, float b, float c, float d) {
-  Context* ctx = compiling();
+  Context* ctx = compiling_list();
   const float v[4] = {a, b, c, d};
   if (ctx != nullptr) compile_attrib(ctx, bit, v);
   if (!executes(ctx)) return;
@@ -57,13 +51,14 @@ void attrib(uint32_t bit, float a, float b, float c, float d) {
     break;
   default: // kListTex1 .. kListTex3
     for (int u = 1; u < kMaxTexUnits; ++u)
-      if (bit == list_tex_bit(u)) exec::MultiTexCoord4f(GL_TEXTURE0 + static_cast<GLenum>(u), a, b, c, d);
+      if (bit == list_tex_bit(u))
+        exec::MultiTexCoord4f(GL_TEXTURE0 + static_cast<GLenum>(u), a, b, c, d);
     break;
   }
 }
 
 void vertex(float x, float y, float z, float w) {
-  Context* ctx = compiling();
+  Context* ctx = compiling_list();
   if (ctx != nullptr) compile_vertex(ctx, x, y, z, w);
   if (executes(ctx)) exec::Vertex4f(x, y, z, w);
 }
@@ -83,7 +78,7 @@ void replay_rect(const void* p) {
 template <typename T> void rect(T x1, T y1, T x2, T y2) {
   const RectArgs r{static_cast<float>(x1), static_cast<float>(y1), static_cast<float>(x2),
                    static_cast<float>(y2)};
-  Context* ctx = compiling();
+  Context* ctx = compiling_list();
   if (ctx != nullptr) {
     if (ctx->dlist.block != nullptr) {
       dlist_record(&replay_rect, &r, sizeof r);
@@ -322,7 +317,7 @@ void replay_pop_attrib(const void*) {
 namespace saver {
 
 void GLAPIENTRY Begin(GLenum mode) {
-  Context* ctx = compiling();
+  Context* ctx = compiling_list();
   if (ctx != nullptr) {
     // An invalid mode, or Begin inside a block, is compiled as the call: its error comes
     // when the list executes.
@@ -335,7 +330,7 @@ void GLAPIENTRY Begin(GLenum mode) {
 }
 
 void GLAPIENTRY End() {
-  Context* ctx = compiling();
+  Context* ctx = compiling_list();
   if (ctx != nullptr) {
     if (ctx->dlist.block != nullptr)
       compile_end(ctx);
@@ -449,13 +444,17 @@ PINEDA_SAVE_TEXCOORD(GLdouble, d)
 // unit is INVALID_ENUM when the list executes.
 inline void multi_tex(GLenum target, float s, float t, float r, float q) {
   const GLenum unit = target - GL_TEXTURE0;
-  if (unit < static_cast<GLenum>(kMaxTexUnits)) return attrib(list_tex_bit(static_cast<int>(unit)), s, t, r, q);
-  if (Context* ctx = compiling()) record_error_at_execution(ctx, GL_INVALID_ENUM, "glMultiTexCoord");
-  if (executes(compiling())) exec::MultiTexCoord4f(target, s, t, r, q);
+  if (unit < static_cast<GLenum>(kMaxTexUnits))
+    return attrib(list_tex_bit(static_cast<int>(unit)), s, t, r, q);
+  if (Context* ctx = compiling_list())
+    record_error_at_execution(ctx, GL_INVALID_ENUM, "glMultiTexCoord");
+  if (executes(compiling_list())) exec::MultiTexCoord4f(target, s, t, r, q);
 }
 
 #define PINEDA_SAVE_MULTITEXCOORD(T, S)                                                            \
-  void GLAPIENTRY MultiTexCoord1##S(GLenum u, T s) { multi_tex(u, float(s), 0.0f, 0.0f, 1.0f); }   \
+  void GLAPIENTRY MultiTexCoord1##S(GLenum u, T s) {                                               \
+    multi_tex(u, float(s), 0.0f, 0.0f, 1.0f);                                                      \
+  }                                                                                                \
   void GLAPIENTRY MultiTexCoord2##S(GLenum u, T s, T t) {                                          \
     multi_tex(u, float(s), float(t), 0.0f, 1.0f);                                                  \
   }                                                                                                \
@@ -484,8 +483,12 @@ PINEDA_SAVE_MULTITEXCOORD(GLdouble, d)
 #undef PINEDA_SAVE_MULTITEXCOORD
 
 // GL 1.4 §2.7: the fog coordinate is a current attribute like the others.
-void GLAPIENTRY FogCoordf(GLfloat coord) { attrib(kListFog, coord, 0.0f, 0.0f, 0.0f); }
-void GLAPIENTRY FogCoordd(GLdouble coord) { attrib(kListFog, float(coord), 0.0f, 0.0f, 0.0f); }
+void GLAPIENTRY FogCoordf(GLfloat coord) {
+  attrib(kListFog, coord, 0.0f, 0.0f, 0.0f);
+}
+void GLAPIENTRY FogCoordd(GLdouble coord) {
+  attrib(kListFog, float(coord), 0.0f, 0.0f, 0.0f);
+}
 void GLAPIENTRY FogCoordfv(const GLfloat* coord) {
   if (coord) FogCoordf(coord[0]);
 }
@@ -517,7 +520,7 @@ void GLAPIENTRY EdgeFlagv(const GLboolean* flag) {
 // GL 2.1 §2.8, §5.4: ArrayElement compiles as the attribute and vertex commands it stands
 // for, with the array contents of now.
 void GLAPIENTRY ArrayElement(GLint i) {
-  Context* ctx = compiling();
+  Context* ctx = compiling_list();
   if (ctx != nullptr) {
     InputVertex v;
     if (i < 0) {
@@ -541,7 +544,7 @@ void GLAPIENTRY ArrayElement(GLint i) {
 }
 
 void GLAPIENTRY DrawArrays(GLenum mode, GLint first, GLsizei count) {
-  Context* ctx = compiling();
+  Context* ctx = compiling_list();
   if (ctx != nullptr) {
     if (!valid_mode(mode))
       record_error_at_execution(ctx, GL_INVALID_ENUM, "glDrawArrays");
@@ -556,7 +559,7 @@ void GLAPIENTRY DrawArrays(GLenum mode, GLint first, GLsizei count) {
 }
 
 void GLAPIENTRY DrawElements(GLenum mode, GLsizei count, GLenum type, const void* indices) {
-  Context* ctx = compiling();
+  Context* ctx = compiling_list();
   if (ctx != nullptr) {
     if (const GLenum err = elements_error(ctx, mode, count, type))
       record_error_at_execution(ctx, err, "glDrawElements");
@@ -568,7 +571,7 @@ void GLAPIENTRY DrawElements(GLenum mode, GLsizei count, GLenum type, const void
 
 void GLAPIENTRY DrawRangeElements(GLenum mode, GLuint start, GLuint end, GLsizei count, GLenum type,
                                   const void* indices) {
-  Context* ctx = compiling();
+  Context* ctx = compiling_list();
   if (ctx != nullptr) {
     const GLenum err =
         end < start ? GLenum{GL_INVALID_VALUE} : elements_error(ctx, mode, count, type);
@@ -582,7 +585,7 @@ void GLAPIENTRY DrawRangeElements(GLenum mode, GLuint start, GLuint end, GLsizei
 
 void GLAPIENTRY MultiDrawArrays(GLenum mode, const GLint* first, const GLsizei* count,
                                 GLsizei drawcount) {
-  Context* ctx = compiling();
+  Context* ctx = compiling_list();
   if (ctx != nullptr) {
     GLenum err = 0;
     if (!valid_mode(mode))
@@ -605,7 +608,7 @@ void GLAPIENTRY MultiDrawArrays(GLenum mode, const GLint* first, const GLsizei* 
 
 void GLAPIENTRY MultiDrawElements(GLenum mode, const GLsizei* count, GLenum type,
                                   const void* const* indices, GLsizei drawcount) {
-  Context* ctx = compiling();
+  Context* ctx = compiling_list();
   if (ctx != nullptr) {
     GLenum err = drawcount < 0 ? GLenum{GL_INVALID_VALUE} : elements_error(ctx, mode, 0, type);
     const bool any = err == 0 && drawcount > 0 && count != nullptr && indices != nullptr;
@@ -622,27 +625,27 @@ void GLAPIENTRY MultiDrawElements(GLenum mode, const GLsizei* count, GLenum type
 }
 
 void GLAPIENTRY Lightfv(GLenum light, GLenum pname, const GLfloat* params) {
-  Context* ctx = compiling();
+  Context* ctx = compiling_list();
   if (ctx == nullptr ||
       record_params(&replay_params<GLfloat, &exec::Lightfv>, light, pname, params))
     exec::Lightfv(light, pname, params);
 }
 
 void GLAPIENTRY Lightiv(GLenum light, GLenum pname, const GLint* params) {
-  Context* ctx = compiling();
+  Context* ctx = compiling_list();
   if (ctx == nullptr || record_params(&replay_params<GLint, &exec::Lightiv>, light, pname, params))
     exec::Lightiv(light, pname, params);
 }
 
 void GLAPIENTRY LightModelfv(GLenum pname, const GLfloat* params) {
-  Context* ctx = compiling();
+  Context* ctx = compiling_list();
   if (ctx == nullptr ||
       record_params(&replay_model_params<GLfloat, &exec::LightModelfv>, 0, pname, params))
     exec::LightModelfv(pname, params);
 }
 
 void GLAPIENTRY LightModeliv(GLenum pname, const GLint* params) {
-  Context* ctx = compiling();
+  Context* ctx = compiling_list();
   if (ctx == nullptr ||
       record_params(&replay_model_params<GLint, &exec::LightModeliv>, 0, pname, params))
     exec::LightModeliv(pname, params);
@@ -651,14 +654,14 @@ void GLAPIENTRY LightModeliv(GLenum pname, const GLint* params) {
 // Material is legal between Begin and End (§2.14.2): inside a compiled block it ends the
 // block's fast form (the block then executes call by call, with the Material in its place).
 void GLAPIENTRY Materialfv(GLenum face, GLenum pname, const GLfloat* params) {
-  Context* ctx = compiling();
+  Context* ctx = compiling_list();
   if (ctx == nullptr ||
       record_params(&replay_params<GLfloat, &exec::Materialfv>, face, pname, params))
     exec::Materialfv(face, pname, params);
 }
 
 void GLAPIENTRY Materialiv(GLenum face, GLenum pname, const GLint* params) {
-  Context* ctx = compiling();
+  Context* ctx = compiling_list();
   if (ctx == nullptr ||
       record_params(&replay_params<GLint, &exec::Materialiv>, face, pname, params))
     exec::Materialiv(face, pname, params);
@@ -666,20 +669,21 @@ void GLAPIENTRY Materialiv(GLenum face, GLenum pname, const GLint* params) {
 
 void GLAPIENTRY Materialf(GLenum face, GLenum pname, GLfloat param) {
   const ScalarArgs<GLfloat> a{face, pname, param};
-  if (compiling() == nullptr ||
+  if (compiling_list() == nullptr ||
       dlist_record(&replay_scalar<GLfloat, &exec::Materialf>, &a, sizeof a))
     exec::Materialf(face, pname, param);
 }
 
 void GLAPIENTRY Materiali(GLenum face, GLenum pname, GLint param) {
   const ScalarArgs<GLint> a{face, pname, param};
-  if (compiling() == nullptr || dlist_record(&replay_scalar<GLint, &exec::Materiali>, &a, sizeof a))
+  if (compiling_list() == nullptr ||
+      dlist_record(&replay_scalar<GLint, &exec::Materiali>, &a, sizeof a))
     exec::Materiali(face, pname, param);
 }
 
 // PopAttrib may restore the current values (CURRENT_BIT): the list no longer knows them.
 void GLAPIENTRY PopAttrib() {
-  Context* ctx = compiling();
+  Context* ctx = compiling_list();
   const bool run = ctx == nullptr || dlist_record(&replay_pop_attrib, nullptr, 0);
   if (ctx != nullptr) forget_attribs(ctx);
   if (run) exec::PopAttrib();
@@ -687,14 +691,14 @@ void GLAPIENTRY PopAttrib() {
 
 // §5.4: the CallList itself is compiled, not the commands of the list it calls.
 void GLAPIENTRY CallList(GLuint list) {
-  Context* ctx = compiling();
+  Context* ctx = compiling_list();
   const bool run = ctx == nullptr || dlist_record(&replay_call_list, &list, sizeof list);
   if (ctx != nullptr) forget_attribs(ctx);
   if (run) exec::CallList(list);
 }
 
 void GLAPIENTRY CallLists(GLsizei n, GLenum type, const void* lists) {
-  Context* ctx = compiling();
+  Context* ctx = compiling_list();
   if (ctx != nullptr) {
     if (!valid_call_lists_type(type) || n < 0) {
       const CallListsError a{n, type};

@@ -25,11 +25,6 @@ int target_components(GLenum target) {
   return 0;
 }
 
-bool compiling() {
-  Context* ctx = current_context();
-  return ctx != nullptr && ctx->dlist.list != nullptr;
-}
-
 // The arguments of Map1 (vorder 0) or Map2. `copied` values of type T follow in the record;
 // has_points tells a null pointer from points that were not copied because the command fails.
 template <typename T> struct alignas(16) MapHeader {
@@ -71,7 +66,7 @@ bool valid_order(GLint order) {
 template <typename T>
 bool save_map(int dim, GLenum target, T u1, T u2, GLint ustride, GLint uorder, T v1, T v2,
               GLint vstride, GLint vorder, const T* points) {
-  if (!compiling()) return true;
+  if (compiling_list() == nullptr) return true;
   const int k = target_components(target);
   const bool target_dim = dim == 1 ? target <= GL_MAP1_VERTEX_4 : target >= GL_MAP2_COLOR_4;
   MapHeader<T> h{

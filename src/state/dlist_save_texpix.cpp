@@ -19,16 +19,11 @@
 #include "dispatch.h"
 #include "pixel/unpack.h"
 #include "state/dlist_internal.h"
+#include "texture/texture_internal.h"
 
 namespace pineda {
 
 namespace {
-
-// The context whose list is being compiled, or nullptr.
-Context* compiling_list() {
-  Context* ctx = current_context();
-  return ctx != nullptr && ctx->dlist.list != nullptr ? ctx : nullptr;
-}
 
 // Records `head` followed by `size` bytes of `data` (a header and its array or image);
 // returns whether the command must also execute now (dlist_record).
@@ -54,9 +49,12 @@ int vec_count(GLenum pname) {
   case GL_OBJECT_PLANE:
   case GL_EYE_PLANE:
   case GL_FOG_COLOR:
-  case GL_TEXTURE_BORDER_COLOR: return 4;
-  case GL_POINT_DISTANCE_ATTENUATION: return 3;
-  default: return 1;
+  case GL_TEXTURE_BORDER_COLOR:
+    return 4;
+  case GL_POINT_DISTANCE_ATTENUATION:
+    return 3;
+  default:
+    return 1;
   }
 }
 
@@ -165,8 +163,8 @@ template <ImageCall Call> bool save_image(ImageHeader h, const void* pixels) {
   Context* ctx = compiling_list();
   if (ctx == nullptr) return true;
   h.unpack = ctx->unpack;
-  h.bytes = pixels == nullptr ? 0
-                              : client_image_bytes(h.w, h.h, h.d, h.format, h.type, ctx->unpack);
+  h.bytes =
+      pixels == nullptr ? 0 : client_image_bytes(h.w, h.h, h.d, h.format, h.type, ctx->unpack);
   try {
     return record_with_data(&replay_image<Call>, &h, sizeof h, pixels, h.bytes);
   } catch (const std::bad_alloc&) {
@@ -175,21 +173,15 @@ template <ImageCall Call> bool save_image(ImageHeader h, const void* pixels) {
   }
 }
 
-bool is_proxy(GLenum target) {
-  return target == GL_PROXY_TEXTURE_1D || target == GL_PROXY_TEXTURE_2D ||
-         target == GL_PROXY_TEXTURE_3D || target == GL_PROXY_TEXTURE_CUBE_MAP;
-}
-
 void call_tex_image_1d(const ImageHeader& h, const void* px) {
   exec::TexImage1D(h.target, h.level, h.internal_format, h.w, h.border, h.format, h.type, px);
 }
 void call_tex_image_2d(const ImageHeader& h, const void* px) {
-  exec::TexImage2D(h.target, h.level, h.internal_format, h.w, h.h, h.border, h.format, h.type,
-                   px);
+  exec::TexImage2D(h.target, h.level, h.internal_format, h.w, h.h, h.border, h.format, h.type, px);
 }
 void call_tex_image_3d(const ImageHeader& h, const void* px) {
-  exec::TexImage3D(h.target, h.level, h.internal_format, h.w, h.h, h.d, h.border, h.format,
-                   h.type, px);
+  exec::TexImage3D(h.target, h.level, h.internal_format, h.w, h.h, h.d, h.border, h.format, h.type,
+                   px);
 }
 void call_tex_sub_image_1d(const ImageHeader& h, const void* px) {
   exec::TexSubImage1D(h.target, h.level, h.x, h.w, h.format, h.type, px);
@@ -273,7 +265,8 @@ void GLAPIENTRY PixelMapusv(GLenum map, GLsizei mapsize, const GLushort* values)
 void GLAPIENTRY PrioritizeTextures(GLsizei n, const GLuint* textures, const GLfloat* priorities) {
   if (compiling_list() == nullptr) return exec::PrioritizeTextures(n, textures, priorities);
   const GLsizei copied = (textures == nullptr || priorities == nullptr)
-                             ? 0 : std::clamp<GLsizei>(n, 0, kMaxCopiedValues);
+                             ? 0
+                             : std::clamp<GLsizei>(n, 0, kMaxCopiedValues);
   const size_t k = static_cast<size_t>(copied);
   const PrioritizeHeader h{n, copied};
   std::vector<char> data(k * (sizeof(GLuint) + sizeof(GLfloat)) + 1);
@@ -290,7 +283,7 @@ void GLAPIENTRY TexImage1D(GLenum target, GLint level, GLint internalformat, GLs
   ImageHeader h;
   h.target = target, h.level = level, h.internal_format = internalformat;
   h.w = width, h.h = 1, h.d = 1, h.border = border, h.format = format, h.type = type;
-  if (is_proxy(target) || save_image<&call_tex_image_1d>(h, pixels))
+  if (is_proxy_texture_target(target) || save_image<&call_tex_image_1d>(h, pixels))
     exec::TexImage1D(target, level, internalformat, width, border, format, type, pixels);
 }
 void GLAPIENTRY TexImage2D(GLenum target, GLint level, GLint internalformat, GLsizei width,
@@ -299,17 +292,16 @@ void GLAPIENTRY TexImage2D(GLenum target, GLint level, GLint internalformat, GLs
   ImageHeader h;
   h.target = target, h.level = level, h.internal_format = internalformat;
   h.w = width, h.h = height, h.d = 1, h.border = border, h.format = format, h.type = type;
-  if (is_proxy(target) || save_image<&call_tex_image_2d>(h, pixels))
-    exec::TexImage2D(target, level, internalformat, width, height, border, format, type,
-                     pixels);
+  if (is_proxy_texture_target(target) || save_image<&call_tex_image_2d>(h, pixels))
+    exec::TexImage2D(target, level, internalformat, width, height, border, format, type, pixels);
 }
 void GLAPIENTRY TexImage3D(GLenum target, GLint level, GLint internalformat, GLsizei width,
-                           GLsizei height, GLsizei depth, GLint border, GLenum format,
-                           GLenum type, const void* pixels) {
+                           GLsizei height, GLsizei depth, GLint border, GLenum format, GLenum type,
+                           const void* pixels) {
   ImageHeader h;
   h.target = target, h.level = level, h.internal_format = internalformat;
   h.w = width, h.h = height, h.d = depth, h.border = border, h.format = format, h.type = type;
-  if (is_proxy(target) || save_image<&call_tex_image_3d>(h, pixels))
+  if (is_proxy_texture_target(target) || save_image<&call_tex_image_3d>(h, pixels))
     exec::TexImage3D(target, level, internalformat, width, height, depth, border, format, type,
                      pixels);
 }
@@ -344,7 +336,8 @@ void GLAPIENTRY DrawPixels(GLsizei width, GLsizei height, GLenum format, GLenum 
                            const void* pixels) {
   ImageHeader h;
   h.w = width, h.h = height, h.d = 1, h.format = format, h.type = type;
-  if (save_image<&call_draw_pixels>(h, pixels)) exec::DrawPixels(width, height, format, type, pixels);
+  if (save_image<&call_draw_pixels>(h, pixels))
+    exec::DrawPixels(width, height, format, type, pixels);
 }
 void GLAPIENTRY Bitmap(GLsizei width, GLsizei height, GLfloat xorig, GLfloat yorig, GLfloat xmove,
                        GLfloat ymove, const GLubyte* bitmap) {

@@ -28,8 +28,8 @@ void compressed_image(const char* func, int dims, GLenum target, GLenum internal
 // §3.8.3: the target must be one TexSubImage of the same dimension takes, and `format` a
 // supported specific compressed format, of which there are none: INVALID_ENUM, checked before
 // the level, region and size, as Mesa (the tie-breaker) checks them.
-void compressed_sub_image(const char* func, int dims, GLenum target, GLint, int, int, int, int,
-                          int, int, GLenum format, GLsizei) {
+void compressed_sub_image(const char* func, int dims, GLenum target, GLint, int, int, int, int, int,
+                          int, GLenum format, GLsizei) {
   PINEDA_CTX_OUTSIDE(func);
   ImageTarget it;
   if (!image_target(ctx, target, dims, false, it))
@@ -40,11 +40,6 @@ void compressed_sub_image(const char* func, int dims, GLenum target, GLint, int,
 // The dimension of a GetCompressedTexImage target (cube faces are 2D).
 int query_dims(GLenum target) {
   return target == GL_TEXTURE_1D ? 1 : target == GL_TEXTURE_3D ? 3 : 2;
-}
-
-bool proxy_target(GLenum target) {
-  return target == GL_PROXY_TEXTURE_1D || target == GL_PROXY_TEXTURE_2D ||
-         target == GL_PROXY_TEXTURE_3D || target == GL_PROXY_TEXTURE_CUBE_MAP;
 }
 
 // ---- display lists (§5.4) ------------------------------------------------------------------
@@ -68,7 +63,8 @@ void replay_image(const void* p) {
 
 void save_image(int dims, GLenum target, GLenum internalformat) {
   const ImageArgs a{target, internalformat, dims};
-  if (proxy_target(target) || dlist_record(&replay_image, &a, sizeof a)) replay_image(&a);
+  if (is_proxy_texture_target(target) || dlist_record(&replay_image, &a, sizeof a))
+    replay_image(&a);
 }
 
 struct SubImageArgs {

@@ -35,6 +35,13 @@ struct ImageTarget {
   int max_levels = 0;
 };
 
+// The four proxy targets (§3.8.11): image commands on them only check and record sizes, and
+// display lists execute them at once (§5.4).
+inline bool is_proxy_texture_target(GLenum target) {
+  return target == GL_PROXY_TEXTURE_1D || target == GL_PROXY_TEXTURE_2D ||
+         target == GL_PROXY_TEXTURE_3D || target == GL_PROXY_TEXTURE_CUBE_MAP;
+}
+
 // Resolves `target` for a command on `dims`-dimensional images (cube faces and
 // PROXY_TEXTURE_CUBE_MAP count as 2D); false when the command does not take it. `allow_proxy`
 // false rejects the proxy targets too.
