@@ -281,6 +281,7 @@ uint32_t restore(Context* c, const AttribFrame& f) {
     c->hint_fog = f.hints.fog;
     c->hint_generate_mipmap = f.hints.generate_mipmap;
     c->hint_texture_compression = f.hints.texture_compression;
+    dirty |= kDirtyFog; // the fog hint picks per-vertex or per-fragment fog
   }
   if (m & GL_FOG_BIT) {
     c->lighting.color_sum = f.color_sum;
