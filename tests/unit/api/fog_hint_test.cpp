@@ -53,12 +53,14 @@ void fog_setup(GLenum mode, float density) {
   glFogfv(GL_FOG_COLOR, blue);
 }
 
-void draw_triangle() {
+// `scale` enlarges the triangle about the origin in normalized device coordinates; above about
+// 1.1 it crosses the clip volume and is clipped (§2.12).
+void draw_triangle(double scale = 1.0) {
   glColor4f(1.0f, 1.0f, 1.0f, 1.0f);
   glBegin(GL_TRIANGLES);
   for (const Vtx& v : kTri) {
     glFogCoordf(static_cast<float>(v.c));
-    glVertex4f(static_cast<float>(v.x * v.w), static_cast<float>(v.y * v.w), 0.0f,
+    glVertex4f(static_cast<float>(scale * v.x * v.w), static_cast<float>(scale * v.y * v.w), 0.0f,
                static_cast<float>(v.w));
   }
   glEnd();
@@ -74,11 +76,11 @@ double fog_eq(GLenum mode, double d, double s, double e, double c) {
 
 // Screen-space barycentrics of the pixel centre (px + 1/2, py + 1/2); false unless every one
 // is at least `margin` (an interior pixel, away from edge ownership questions).
-bool barycentric(int px, int py, double margin, double b[3]) {
+bool barycentric(int px, int py, double margin, double scale, double b[3]) {
   double wx[3], wy[3];
   for (int i = 0; i < 3; ++i) {
-    wx[i] = (kTri[i].x + 1.0) * 0.5 * kSize;
-    wy[i] = (kTri[i].y + 1.0) * 0.5 * kSize;
+    wx[i] = (scale * kTri[i].x + 1.0) * 0.5 * kSize;
+    wy[i] = (scale * kTri[i].y + 1.0) * 0.5 * kSize;
   }
   const double x = px + 0.5, y = py + 0.5;
   const double area = (wx[1] - wx[0]) * (wy[2] - wy[0]) - (wx[2] - wx[0]) * (wy[1] - wy[0]);
@@ -119,12 +121,12 @@ protected:
   static_assert(kW == kSize && kH == kSize);
   // Checks the interior pixels of the drawn triangle against the per-vertex (FASTEST) or
   // per-fragment reference; returns the number of pixels checked.
-  int check_pixels(GLenum mode, double d, double s, double e, bool per_vertex) {
+  int check_pixels(GLenum mode, double d, double s, double e, bool per_vertex, double scale = 1.0) {
     int checked = 0;
     for (int y = 0; y < kH; ++y)
       for (int x = 0; x < kW; ++x) {
         double b[3];
-        if (!barycentric(x, y, 0.02, b)) continue;
+        if (!barycentric(x, y, 0.02, scale, b)) continue;
         const Refs r = references(mode, d, s, e, b);
         const double want = 255.0 * (per_vertex ? r.per_vertex : r.per_fragment);
         const uint32_t px = pixel(x, y);
@@ -204,6 +206,50 @@ TEST_F(FogHintTest, ExpAndExp2FollowTheHint) {
   EXPECT_EQ(glGetError(), static_cast<GLenum>(GL_NO_ERROR));
 }
 
+// A clipped triangle (§2.12): the vertices clipping makes carry factors interpolated from the
+// original vertices, so the pixels are still the interpolation of the original per-vertex
+// factors.
+TEST_F(FogHintTest, ClippedTrianglePerVertex) {
+  for (GLenum mode : {GL_EXP, GL_EXP2}) {
+    SCOPED_TRACE(testing::Message() << "mode " << mode);
+    identity_setup();
+    fog_setup(mode, 0.5f);
+    glHint(GL_FOG_HINT, GL_FASTEST);
+    draw_triangle(1.6);
+    EXPECT_GT(check_pixels(mode, 0.5, 0.0, 1.0, true, 1.6), 300);
+  }
+}
+
+// Lines (§3.4.2) and points interpolate the per-vertex factors too: a horizontal line along
+// the centres of pixel row 16 with coordinates 0 and 5, then a point with coordinate 3.
+TEST_F(FogHintTest, LinesAndPointsPerVertex) {
+  identity_setup();
+  fog_setup(GL_EXP, 0.6f);
+  glHint(GL_FOG_HINT, GL_FASTEST);
+  const double x0 = 1.6, x1 = 30.4; // window x of the ends
+  glColor3f(1, 1, 1);
+  glBegin(GL_LINES);
+  glFogCoordf(0.0f);
+  glVertex2d(x0 / 16.0 - 1.0, 16.5 / 16.0 - 1.0);
+  glFogCoordf(5.0f);
+  glVertex2d(x1 / 16.0 - 1.0, 16.5 / 16.0 - 1.0);
+  glEnd();
+  const double f0 = 1.0, f1 = std::exp(-0.6 * 5.0);
+  int checked = 0;
+  for (int x = 0; x < kW; ++x) {
+    const double t = (x + 0.5 - x0) / (x1 - x0);
+    if (t < 0.05 || t > 0.95) continue;
+    EXPECT_NEAR(static_cast<double>(pixel(x, 16) & 0xff), 255.0 * (f0 + (f1 - f0) * t), kTol) << x;
+    ++checked;
+  }
+  EXPECT_GT(checked, 20);
+  glBegin(GL_POINTS);
+  glFogCoordf(3.0f);
+  glVertex2d(4.5 / 16.0 - 1.0, 4.5 / 16.0 - 1.0);
+  glEnd();
+  EXPECT_NEAR(static_cast<double>(pixel(4, 4) & 0xff), 255.0 * std::exp(-0.6 * 3.0), kTol);
+}
+
 // With a strongly varying coordinate the two evaluations differ visibly, and switching the
 // hint back and forth (directly, through a display list, through the attribute stack) switches
 // the result.
@@ -231,6 +277,19 @@ TEST_F(FogHintTest, FastestAndNicestDiffer) {
   glDeleteLists(list, 1);
   glHint(GL_FOG_HINT, GL_NICEST);
   EXPECT_EQ(render([] {}), nicest);
+  // A list holds vertices, not fog factors: the hint in force when it is called decides.
+  const GLuint geometry = glGenLists(1);
+  glNewList(geometry, GL_COMPILE);
+  draw_triangle();
+  glEndList();
+  for (GLenum hint : {GL_FASTEST, GL_NICEST}) {
+    identity_setup();
+    fog_setup(GL_EXP2, 0.6f);
+    glHint(GL_FOG_HINT, hint);
+    glCallList(geometry);
+    EXPECT_EQ(buf_, hint == GL_FASTEST ? fastest : nicest);
+  }
+  glDeleteLists(geometry, 1);
   EXPECT_EQ(render([] {
               glPushAttrib(GL_HINT_BIT);
               glHint(GL_FOG_HINT, GL_FASTEST);
