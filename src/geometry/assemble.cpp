@@ -293,16 +293,22 @@ void assemble(Sink& sink, const DrawCall& dc, GLenum mode, const PVertex* verts,
 
 void draw_primitives(const DrawCall& dc, GLenum mode, const PVertex* verts, const uint32_t* indices,
                      size_t count) {
-  // The fragment stage is set up once for the whole draw, not once per primitive.
-  FragCtx frag;
-  prepare_fragments(*dc.state, *dc.fb, frag);
+  // The fragment stage is set up once for the whole draw, not once per primitive, or comes
+  // with the draw (the context's draw cache).
+  FragCtx local;
+  const FragCtx* frag = dc.frag;
+  if (frag == nullptr) {
+    prepare_fragments(*dc.state, *dc.fb, local);
+    frag = &local;
+  }
+  frag->samples_passed = 0;
   DrawCall prepared = dc;
-  prepared.frag = &frag;
+  prepared.frag = frag;
   float stipple_counter = 0.0f;
   prepared.stipple_counter = &stipple_counter;
   RasterSink sink{prepared};
   assemble(sink, prepared, mode, verts, indices, count);
-  if (dc.samples_passed != nullptr) *dc.samples_passed += frag.samples_passed;
+  if (dc.samples_passed != nullptr) *dc.samples_passed += frag->samples_passed;
 }
 
 void draw_primitives_to(PrimitiveSink& sink, const DrawCall& dc, GLenum mode, const PVertex* verts,
