@@ -3,6 +3,8 @@
 #include <GL/gl.h>
 #include <GL/glext.h>
 
+#include <vector>
+
 #include "api_fixture.h"
 
 namespace {
@@ -193,6 +195,99 @@ TEST(PiglitRegressionLines, StippleCounterIgnoresTransformRounding) {
   }
   OSMesaMakeCurrent(nullptr, nullptr, 0, 0, 0);
   OSMesaDestroyContext(ctx);
+}
+
+// A 2x2 RGBA float texture whose texel (i, j) is tex2x2[j][i], nearest filtering, MODULATE.
+void texture_2x2(const float (*texels)[2][4]) {
+  glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA, 2, 2, 0, GL_RGBA, GL_FLOAT, texels);
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+  glTexEnvi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_MODULATE);
+}
+
+int to_ub(double v) {
+  return static_cast<int>(v * 255.0 + 0.5);
+}
+
+// piglit draw-pixel-with-texture: DrawPixels fragments take the raster position's texture
+// coordinates and are textured (GL 2.1 §3.6.4 "Conversion to Fragments", §3.8.13); the same
+// for Bitmap (§3.7) and CopyPixels (§4.3.3: as DrawPixels).
+TEST_F(PiglitRegressionTest, PixelRectanglesAreTextured) {
+  ortho_pixels(kW, kH);
+  const float texels[2][2][4] = {{{1, 0, 0, 1}, {0, 1, 0, 1}}, {{0, 0, 1, 1}, {1, 1, 1, 0.5f}}};
+  texture_2x2(texels);
+  glEnable(GL_TEXTURE_2D);
+  std::vector<float> img(4 * 4 * 4);
+  for (size_t i = 0; i < img.size(); i += 4)
+    img[i] = 0.2f, img[i + 1] = 0.6f, img[i + 2] = 0.8f, img[i + 3] = 1.0f;
+  glClearColor(0, 0, 0, 0);
+  glClear(GL_COLOR_BUFFER_BIT);
+
+  glTexCoord2f(0.75f, 0.25f); // texel (1, 0): green
+  glRasterPos2i(0, 0);
+  glDrawPixels(4, 4, GL_RGBA, GL_FLOAT, img.data());
+  Rgba p = read_rgba(1, 1);
+  EXPECT_EQ(p.r, 0);
+  EXPECT_EQ(p.g, to_ub(0.6));
+  EXPECT_EQ(p.b, 0);
+  EXPECT_EQ(p.a, 255);
+
+  // Bitmap: the raster colour modulated by texel (1, 1) (white, alpha 0.5).
+  glColor4f(0.4f, 0.5f, 0.6f, 1.0f);
+  glTexCoord2f(0.75f, 0.75f);
+  glRasterPos2i(8, 0);
+  const GLubyte bits[4] = {0xf0, 0xf0, 0xf0, 0xf0};
+  glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+  glBitmap(4, 4, 0, 0, 0, 0, bits);
+  p = read_rgba(9, 1);
+  EXPECT_EQ(p.r, to_ub(0.4));
+  EXPECT_EQ(p.g, to_ub(0.5));
+  EXPECT_EQ(p.b, to_ub(0.6));
+  EXPECT_EQ(p.a, to_ub(0.5));
+
+  // CopyPixels of the green DrawPixels result, modulated by texel (0, 1) (blue): black.
+  glTexCoord2f(0.25f, 0.75f);
+  glRasterPos2i(16, 0);
+  glCopyPixels(0, 0, 4, 4, GL_COLOR);
+  p = read_rgba(17, 1);
+  EXPECT_EQ(p.r, 0);
+  EXPECT_EQ(p.g, 0);
+  EXPECT_EQ(p.b, 0);
+  EXPECT_EQ(err(), GLenum(GL_NO_ERROR));
+
+  // Texturing off again: DrawPixels writes its colours unchanged.
+  glDisable(GL_TEXTURE_2D);
+  glRasterPos2i(24, 0);
+  glDrawPixels(4, 4, GL_RGBA, GL_FLOAT, img.data());
+  p = read_rgba(25, 1);
+  EXPECT_EQ(p.r, to_ub(0.2));
+  EXPECT_EQ(p.g, to_ub(0.6));
+  EXPECT_EQ(p.b, to_ub(0.8));
+}
+
+// §3.10: fog applies to pixel fragments too, with the raster distance as fog coordinate
+// (§2.13). Linear fog from 0 to 8 at distance 4 blends half of the fog colour in.
+TEST_F(PiglitRegressionTest, PixelRectanglesAreFogged) {
+  ortho_pixels(kW, kH);
+  glTranslatef(0, 0, -1); // eye z = -1 for the raster position below
+  glEnable(GL_FOG);
+  glFogi(GL_FOG_MODE, GL_LINEAR);
+  glFogf(GL_FOG_START, 0.0f);
+  glFogf(GL_FOG_END, 8.0f);
+  const float fog_color[4] = {0, 1, 0, 1};
+  glFogfv(GL_FOG_COLOR, fog_color);
+  glRasterPos3f(0, 0, 0);
+  GLfloat dist = 0;
+  glGetFloatv(GL_CURRENT_RASTER_DISTANCE, &dist);
+  ASSERT_FLOAT_EQ(dist, 1.0f);
+  const float img[4] = {1, 0, 0, 1};
+  glDrawPixels(1, 1, GL_RGBA, GL_FLOAT, img);
+  const double f = (8.0 - 1.0) / 8.0;
+  const Rgba p = read_rgba(0, 0);
+  EXPECT_NEAR(p.r, to_ub(f), 1);
+  EXPECT_NEAR(p.g, to_ub(1.0 - f), 1);
+  EXPECT_EQ(p.b, 0);
+  glDisable(GL_FOG);
 }
 
 } // namespace
