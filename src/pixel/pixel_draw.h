@@ -7,6 +7,7 @@
 #include <cstdint>
 
 #include "framebuffer/framebuffer.h"
+#include "pixel/raster_pos.h"
 #include "raster/raster.h"
 
 namespace pineda {
@@ -33,6 +34,11 @@ struct PixelRect {
   const uint8_t* present = nullptr;
   float color[4] = {0, 0, 0, 0};
   float z = 0.0f;
+  // While texturing or fog is on (RasterState::shade), the fragments take the texture
+  // coordinates and fog distance of this raster position (§3.6.4 "Conversion to Fragments")
+  // and go through texturing and fog like a primitive's (§3.8, §3.10); no colour sum, as in
+  // llvmpipe. Null: no shading.
+  const RasterPos* raster = nullptr;
 };
 
 // Colour values are clamped to [0, 1] and depth values too before they become fragments
@@ -45,8 +51,10 @@ void draw_stencil_rect(const RasterState& rs, const Framebuffer& fb, const Pixel
                        const uint32_t* index, const uint8_t* present);
 
 // §3.7: fragments where bits[j * w + i] is non-zero, lower left corner at (x, y), all with
-// the raster position's colour and window z.
+// the raster position's colour and window z. While texturing or fog is on they are shaded
+// with `raster`'s texture coordinates, secondary colour (colour sum) and fog distance, as
+// PixelRect::raster says.
 void draw_bitmap(const RasterState& rs, const Framebuffer& fb, int x, int y, int w, int h,
-                 const uint8_t* bits, const float color[4], float z);
+                 const uint8_t* bits, const float color[4], float z, const RasterPos& raster);
 
 } // namespace pineda
