@@ -161,7 +161,8 @@ def main():
     print("csv: %s" % args.csv)
 
     fams = [k for k in families if any(r["family"] == k for r in rows)]
-    fig, axes = plt.subplots(2, len(fams), figsize=(5.2 * len(fams), 8.5), squeeze=False)
+    fig, axes = plt.subplots(2, len(fams), figsize=(max(8.0, 5.2 * len(fams)), 8.5),
+                             squeeze=False)
     for col, key in enumerate(fams):
         fr = [r for r in rows if r["family"] == key]
         for row, metric in enumerate(("bad_percent", "psnr")):
@@ -177,27 +178,32 @@ def main():
                 ax.scatter(xs, ys, marker=marker, color=colour, label=label, zorder=3)
                 if source != "pineda":
                     continue
-                for x, y, r in zip(xs, ys, fr):
-                    ax.annotate(r["variant"], (x, y), textcoords="offset points", xytext=(5, 4),
-                                fontsize=7)
+                # Staggered labels: variants of equal cost and error would print over each other.
+                for i, (x, y, r) in enumerate(zip(xs, ys, fr)):
+                    ax.annotate(r["variant"], (x, y), textcoords="offset points",
+                                xytext=(5, 4 - 9 * (i % 3)), fontsize=7)
             ax.axhline(fr[0]["llvmpipe_accurate_ms"], color="tab:red", linestyle="--",
                        linewidth=1, label="llvmpipe, accurate variant")
             ax.set_ylim(bottom=0)
             ax.grid(True, alpha=0.3)
             if metric == "bad_percent":
+                worst = max(max(r["bad_percent"], r["llvmpipe_bad_percent"]) for r in fr)
                 ax.set_xscale("symlog", linthresh=0.1)
-                ax.set_xlim(left=0)
+                ax.set_xlim(0, min(100.0, max(1.0, 2.0 * worst)))
                 ax.set_xlabel("bad pixels %% (channel difference > %d) vs llvmpipe accurate"
                               % args.tolerance)
                 ax.set_title(fr[0]["title"])
             else:
                 ax.set_xlabel("PSNR dB vs llvmpipe accurate (identical at %d)"
                               % PSNR_IDENTICAL)
-                ax.invert_xaxis()  # better quality to the left in both rows
+                lowest = min(min(r["psnr"], r["llvmpipe_psnr"]) for r in fr)
+                # Better quality to the left in both rows.
+                ax.set_xlim(PSNR_IDENTICAL + 2, min(PSNR_IDENTICAL - 10, lowest - 3))
             ax.set_ylabel("frame time ms (median)")
             if col == 0 and row == 0:
                 ax.legend(fontsize=7, loc="lower right")
-    fig.suptitle("Time against error: quality variants chosen through GL state (* = accurate)")
+    fig.suptitle("Time against error: quality variants chosen through GL state (* = accurate)",
+                 fontsize=11)
     fig.tight_layout()
     fig.savefig(args.png, dpi=110)
     print("chart: %s" % args.png)
