@@ -59,6 +59,15 @@ def slope(xs, ys):
     return float(np.polyfit(lx, ly, 1)[0])
 
 
+def end_slope(xs, ys):
+    """Slope of log y against log x between the two largest sizes: the asymptotic cost."""
+    pairs = sorted((x, y) for x, y in zip(xs, ys) if x > 0 and y > 0)
+    if len(pairs) < 2:
+        return float("nan")
+    (x0, y0), (x1, y1) = pairs[-2], pairs[-1]
+    return float(np.log(y1 / y0) / np.log(x1 / x0))
+
+
 def main():
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("--run", action="append", required=True, help="THREADS:DIR")
@@ -103,9 +112,13 @@ def main():
     for kind, png, xlabel, title in (
             ("tris", args.png_tris, "triangles",
              "Time against triangle count (same 1024x1024 area covered)"),
-            ("res", args.png_res, "pixels", "Time against resolution (textured mesh)")):
+            ("res", args.png_res, "pixels (window size)",
+             "Time against resolution (textured mesh)")):
         fig, ax = plt.subplots(figsize=(8, 6))
-        print("%s: slope of log time against log %s (upper half of the points)" % (kind, xlabel))
+        ax.set_xscale("log")  # before the tick labels below, which a scale change would reset
+        ax.set_yscale("log")
+        print("%s: slope of log time against log %s (fit over the upper half of the points, and "
+              "between the two largest)" % (kind, xlabel))
         ref_anchor = None
         for impl, threads, pts in series:
             pk = sorted((p for p in pts if p["kind"] == kind), key=lambda p: p["size"])
@@ -114,20 +127,25 @@ def main():
             xs = [p["size"] for p in pk]
             ys = [p[impl + "_ms"] for p in pk]
             colour, marker = styles[impl]
-            s = slope(xs, ys)
+            s, e = slope(xs, ys), end_slope(xs, ys)
             ax.plot(xs, ys, marker=marker, color=colour,
                     linestyle="-" if threads == 1 else "--", alpha=1.0 if threads == 1 else 0.7,
-                    label="%s (slope %.2f)" % (label(impl, threads), s))
-            print("  %-58s %.2f   %s" % (label(impl, threads), s,
-                                         "  ".join("%.1f" % y for y in ys)))
+                    label="%s (slope %.2f, last step %.2f)" % (label(impl, threads), s, e))
+            print("  %-58s fit %.2f  last step %.2f   ms: %s" % (
+                label(impl, threads), s, e, "  ".join("%.1f" % y for y in ys)))
+            if kind == "res":
+                ax.set_xticks(xs, ["%dx%d" % (p["width"], p["height"]) for p in pk],
+                              rotation=30, fontsize=8)
+            else:
+                ax.set_xticks(xs, ["%dk" % round(x / 1000) if x < 1e6 else "%.2fM" % (x / 1e6)
+                                   for x in xs], fontsize=8)
+            ax.minorticks_off()
             if ref_anchor is None or (impl == "pineda" and threads == 1):
                 ref_anchor = (xs[-1], ys[-1], xs[0])
         if ref_anchor is not None:
             x1, y1, x0 = ref_anchor
             ax.plot([x0, x1], [y1 * x0 / x1, y1], color="0.5", linestyle=":",
                     label="linear reference (slope 1)")
-        ax.set_xscale("log")
-        ax.set_yscale("log")
         ax.set_xlabel(xlabel)
         ax.set_ylabel("frame time ms (median)")
         ax.set_title(title)
