@@ -90,7 +90,7 @@ def main():
         title, _, label = desc[scene].partition(": ")
         fam = families.setdefault(parts[1], {"title": title, "accurate": None, "variants": []})
         if label.endswith(ACCURATE):
-            label = label[: -len(ACCURATE)] + " *"
+            label = label[: -len(ACCURATE)]
             fam["accurate"] = scene
         fam["variants"].append((scene, label))
 
@@ -123,6 +123,7 @@ def main():
                 continue
             rows.append({
                 "family": key, "title": fam["title"], "variant": label, "scene": scene,
+                "shown": label + (" *" if scene == acc else ""),
                 "accurate": int(scene == acc), "pineda_ms": pineda_ms, "llvmpipe_ms": llvm_ms,
                 "llvmpipe_accurate_ms": times[acc][1],
                 "pineda_speedup": times[acc][0] / pineda_ms if pineda_ms > 0 else 0.0,
@@ -146,13 +147,13 @@ def main():
         for r in rows:
             w.writerow(["%.4f" % r[c] if isinstance(r[c], float) else r[c] for c in cols])
 
-    print("%-38s %9s %8s %8s %7s %6s | %9s %7s %7s | %8s" % (
+    print("%-52s %9s %8s %8s %7s %6s | %9s %7s %7s | %8s" % (
         "variant (* = accurate)", "pineda", "speedup", "llvmpipe", "bad%", "PSNR",
         "llvm bad%", "PSNR", "llvm acc", "same bad%"))
-    print("-" * 128)
+    print("-" * 142)
     for r in rows:
-        print("%-38s %7.2fms %7.2fx %6.2fms %7.3f %6s | %9.3f %7s %6.2fms | %8.3f" % (
-            (r["title"] + ": " + r["variant"])[:38], r["pineda_ms"], r["pineda_speedup"],
+        print("%-52s %7.2fms %7.2fx %6.2fms %7.3f %6s | %9.3f %7s %6.2fms | %8.3f" % (
+            (r["title"] + ": " + r["shown"])[:52], r["pineda_ms"], r["pineda_speedup"],
             r["llvmpipe_ms"], r["bad_percent"], fmt_psnr(r["psnr"]), r["llvmpipe_bad_percent"],
             fmt_psnr(r["llvmpipe_psnr"]), r["llvmpipe_accurate_ms"],
             r["same_variant_bad_percent"]))
@@ -180,7 +181,7 @@ def main():
                     continue
                 # Staggered labels: variants of equal cost and error would print over each other.
                 for i, (x, y, r) in enumerate(zip(xs, ys, fr)):
-                    ax.annotate(r["variant"], (x, y), textcoords="offset points",
+                    ax.annotate(r["shown"], (x, y), textcoords="offset points",
                                 xytext=(5, 4 - 9 * (i % 3)), fontsize=7)
             ax.axhline(fr[0]["llvmpipe_accurate_ms"], color="tab:red", linestyle="--",
                        linewidth=1, label="llvmpipe, accurate variant")
