@@ -17,6 +17,7 @@ PACKAGES=(
   libglfw3-dev           # GLX tests: an unmodified GLFW program; the demos (demos/)
   freeglut3-dev          # tests/programs: a freeglut program on Pineda
   piglit                 # scripts/piglit.sh: the external GL 1.x test list (not in the test run)
+  python3-matplotlib     # scripts/sweep.sh, scaling.sh: charts (run with /usr/bin/python3)
 )
 
 missing=()
