@@ -20,6 +20,8 @@ int texture_get_values(Context* ctx, GLenum pname, double* v, bool* is_float); /
 int pixel_query(const Context* ctx, GLenum pname, double* v, int* kind);
 // Evaluator limits and grids (eval.cpp), as pixel_query.
 int eval_query(const Context* ctx, GLenum pname, double* v, int* kind);
+// EXT_vertex_array's *_ARRAY_COUNT_EXT (ext_commands.cpp): one integer.
+bool varray_ext_count(const Context* ctx, GLenum pname, double* value);
 
 namespace {
 
@@ -342,6 +344,10 @@ bool get_values(Context* ctx, GLenum pname, Values& out) {
   case GL_NUM_COMPRESSED_TEXTURE_FORMATS: out.add(0); return true;
   case GL_COMPRESSED_TEXTURE_FORMATS: return true;
   default: {
+    if (varray_ext_count(ctx, pname, out.v)) {
+      out.n = 1;
+      return true;
+    }
     // Texture units, texture environment and generation, fog (src/state/texenv.cpp).
     int kind = 0;
     if (!texpipe_get(ctx, pname, &kind, out.v, &out.n)) return false;
