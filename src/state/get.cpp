@@ -275,6 +275,7 @@ bool get_values(Context* ctx, GLenum pname, Values& out) {
   case GL_BLEND_SRC_ALPHA: out.add(ctx->blend_src_a); return true;
   case GL_BLEND_DST_ALPHA: out.add(ctx->blend_dst_a); return true;
   case GL_BLEND_EQUATION: out.add(ctx->blend_eq_rgb); return true;
+  case GL_BLEND_EQUATION_ALPHA: out.add(ctx->blend_eq_a); return true;
   case GL_BLEND_COLOR:
     out.kind = Kind::Normalized;
     for (float c : ctx->blend_color) out.add(c);

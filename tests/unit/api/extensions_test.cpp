@@ -163,6 +163,50 @@ TEST_F(Extensions, StateAliasesSetTheCoreState) {
   EXPECT_EQ(glGetError(), static_cast<GLenum>(GL_NO_ERROR));
 }
 
+// EXT_blend_equation_separate (GL 2.1 §4.1.8): RGB and alpha have their own equations.
+TEST_F(Extensions, BlendEquationSeparate) {
+  auto separate = proc<PFNGLBLENDEQUATIONSEPARATEEXTPROC>("glBlendEquationSeparateEXT");
+  ASSERT_NE(separate, nullptr);
+  separate(GL_FUNC_ADD, GL_FUNC_REVERSE_SUBTRACT);
+  GLint rgb = 0, alpha = 0;
+  glGetIntegerv(GL_BLEND_EQUATION_RGB_EXT, &rgb);
+  glGetIntegerv(GL_BLEND_EQUATION_ALPHA_EXT, &alpha);
+  EXPECT_EQ(rgb, GL_FUNC_ADD);
+  EXPECT_EQ(alpha, GL_FUNC_REVERSE_SUBTRACT);
+  // Either mode invalid: INVALID_ENUM and no change.
+  separate(GL_MIN, GL_ONE);
+  EXPECT_EQ(glGetError(), static_cast<GLenum>(GL_INVALID_ENUM));
+  separate(GL_ZERO, GL_MAX);
+  EXPECT_EQ(glGetError(), static_cast<GLenum>(GL_INVALID_ENUM));
+  glBegin(GL_POINTS);
+  separate(GL_MIN, GL_MAX);
+  glEnd();
+  EXPECT_EQ(glGetError(), static_cast<GLenum>(GL_INVALID_OPERATION));
+  glGetIntegerv(GL_BLEND_EQUATION_RGB_EXT, &rgb);
+  glGetIntegerv(GL_BLEND_EQUATION_ALPHA_EXT, &alpha);
+  EXPECT_EQ(rgb, GL_FUNC_ADD);
+  EXPECT_EQ(alpha, GL_FUNC_REVERSE_SUBTRACT);
+
+  // dst (0.5, 0.5, 0.5, 0.5), src (0.25, 0, 0, 0.25), factors ONE/ONE: RGB adds (0.75, 0.5,
+  // 0.5), alpha subtracts the source from the destination (0.25).
+  glClearColor(0.5f, 0.5f, 0.5f, 0.5f);
+  glClear(GL_COLOR_BUFFER_BIT);
+  glEnable(GL_BLEND);
+  glBlendFunc(GL_ONE, GL_ONE);
+  glColor4f(0.25f, 0, 0, 0.25f);
+  glRecti(-1, -1, 1, 1);
+  glFinish();
+  const uint32_t p = pixel(3, 3);
+  EXPECT_NEAR(static_cast<int>(p & 0xff), 191, 1);
+  EXPECT_NEAR(static_cast<int>((p >> 8) & 0xff), 128, 1);
+  EXPECT_NEAR(static_cast<int>(p >> 24), 64, 1);
+
+  // glBlendEquation sets both again.
+  glBlendEquation(GL_MAX);
+  glGetIntegerv(GL_BLEND_EQUATION_ALPHA_EXT, &alpha);
+  EXPECT_EQ(alpha, GL_MAX);
+}
+
 TEST_F(Extensions, AliasesAreCompiledIntoDisplayLists) {
   auto color2 = proc<PFNGLSECONDARYCOLOR3FEXTPROC>("glSecondaryColor3fEXT");
   ASSERT_NE(color2, nullptr);
