@@ -349,3 +349,49 @@ TEST_F(Extensions, VertexArrayDrawsWithTheExtensionCommands) {
 }
 
 } // namespace
+
+namespace {
+
+// GL 2.1 §5.3 (piglit's gl-1.0-rendermode-feedback, which needs EXT_vertex_array): a triangle
+// of collinear vertices survives clipping and, with culling off, is reported; culled (it is
+// back-facing, §3.5.1) when back faces are culled. Selection counts it alike (§5.2).
+TEST_F(Extensions, FeedbackAndSelectionReportZeroAreaTriangles) {
+  glMatrixMode(GL_PROJECTION);
+  glOrtho(0, kW, 0, kH, -1, 1);
+  glMatrixMode(GL_MODELVIEW);
+  const GLfloat v[12] = {1, 2, 0.4f, 1, 3, 4, 0.6f, 1, 5, 6, 0.8f, 1};
+  proc<PFNGLVERTEXPOINTEREXTPROC>("glVertexPointerEXT")(4, GL_FLOAT, 0, 3, v);
+  glEnableClientState(GL_VERTEX_ARRAY);
+  GLfloat fb[16] = {};
+  glFeedbackBuffer(16, GL_3D, fb);
+  glRenderMode(GL_FEEDBACK);
+  glDrawArrays(GL_TRIANGLES, 0, 3);
+  ASSERT_EQ(glRenderMode(GL_RENDER), 11);
+  const GLfloat want[11] = {GL_POLYGON_TOKEN, 3, 1, 2, 0.3f, 3, 4, 0.2f, 5, 6, 0.1f};
+  for (int i = 0; i < 11; ++i)
+    EXPECT_NEAR(fb[i], want[i], 1e-5) << i;
+
+  glEnable(GL_CULL_FACE);
+  glRenderMode(GL_FEEDBACK);
+  glDrawArrays(GL_TRIANGLES, 0, 3);
+  EXPECT_EQ(glRenderMode(GL_RENDER), 0);
+  glDisable(GL_CULL_FACE);
+
+  GLuint hits[8] = {};
+  glSelectBuffer(8, hits);
+  glRenderMode(GL_SELECT);
+  glInitNames();
+  glPushName(7);
+  glDrawArrays(GL_TRIANGLES, 0, 3);
+  EXPECT_EQ(glRenderMode(GL_RENDER), 1);
+  EXPECT_EQ(hits[3], 7u);
+  // Rendering it draws nothing.
+  glClear(GL_COLOR_BUFFER_BIT);
+  glDrawArrays(GL_TRIANGLES, 0, 3);
+  glFinish();
+  for (int y = 0; y < kH; ++y)
+    for (int x = 0; x < kW; ++x)
+      ASSERT_EQ(pixel(x, y), 0u) << x << "," << y;
+}
+
+} // namespace
