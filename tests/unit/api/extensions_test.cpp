@@ -395,3 +395,35 @@ TEST_F(Extensions, FeedbackAndSelectionReportZeroAreaTriangles) {
 }
 
 } // namespace
+
+namespace {
+
+// GL 2.1 §4.1.7 (piglit's occlusion_query_meta_fragments, which needs ARB_occlusion_query):
+// fragments of DrawPixels, CopyPixels and Bitmap are counted like those of primitives.
+TEST_F(Extensions, OcclusionQueriesCountPixelFragments) {
+  GLuint q = 0;
+  glGenQueries(1, &q);
+  const auto count = [&](auto draw) {
+    glBeginQuery(GL_SAMPLES_PASSED, q);
+    draw();
+    glEndQuery(GL_SAMPLES_PASSED);
+    GLuint n = 0;
+    glGetQueryObjectuiv(q, GL_QUERY_RESULT, &n);
+    return n;
+  };
+  glWindowPos2i(4, 4);
+  const GLubyte rgba[4 * 4] = {};
+  EXPECT_EQ(count([&] { glDrawPixels(2, 2, GL_RGBA, GL_UNSIGNED_BYTE, rgba); }), 4u);
+  EXPECT_EQ(count([&] { glCopyPixels(0, 0, 2, 2, GL_COLOR); }), 4u);
+  const GLubyte bits[2] = {0xF0, 0xF0}; // two rows of four set bits
+  glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+  EXPECT_EQ(count([&] { glBitmap(8, 2, 0, 0, 0, 0, bits); }), 8u);
+  // Fragments that fail the depth test are not counted.
+  glEnable(GL_DEPTH_TEST);
+  glDepthFunc(GL_NEVER);
+  EXPECT_EQ(count([&] { glDrawPixels(2, 2, GL_RGBA, GL_UNSIGNED_BYTE, rgba); }), 0u);
+  EXPECT_EQ(count([&] { glBitmap(8, 2, 0, 0, 0, 0, bits); }), 0u);
+  glDeleteQueries(1, &q);
+}
+
+} // namespace
