@@ -364,9 +364,6 @@ class Extensions:
         for command in sorted(aliased, key=lambda n: n.encode('ascii')):
             self.aliases.append((registry.commands[command], aliased[command]))
 
-    def string(self):
-        return ' '.join(self.names)
-
 
 def define_enum(enum):
     return '#define %-40s %s' % (enum.name, enum.literal())
