@@ -63,6 +63,7 @@ struct ClientArray {
   GLsizei stride = 0;          // as given; 0 means tightly packed
   const void* pointer = nullptr;
   GLuint buffer = 0;           // GL_ARRAY_BUFFER_BINDING captured at glXxxPointer time
+  GLsizei count_ext = 0;       // EXT_vertex_array's count (src/state/ext_commands.cpp)
 };
 
 struct VertexArrays {

@@ -34,6 +34,8 @@ inline unsigned flag_bit(const PVertex& v, unsigned bit) {
 
 // Production sink: straight to the rasterizer.
 struct RasterSink {
+  // A zero-area polygon in FILL mode covers no pixel: it is dropped before the rasterizer.
+  static constexpr bool kKeepsZeroArea = false;
   const DrawCall& dc;
   void triangle(const PVertex& a, const PVertex& b, const PVertex& c, const PVertex& provoking,
                 bool back) {
@@ -103,7 +105,7 @@ private:
     const bool back = is_back_facing(face_, area2);
     if (is_culled(face_, back)) return;
     if (fill_fast_) {
-      if (area2 != 0) sink_.triangle(a, b, c, pv, back);
+      if (area2 != 0 || Sink::kKeepsZeroArea) sink_.triangle(a, b, c, pv, back);
       return;
     }
     const PVertex* v[3] = {&a, &b, &c};

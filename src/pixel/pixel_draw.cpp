@@ -161,22 +161,24 @@ void set_color(FragInputs& in, const float* rgba) {
 
 } // namespace
 
-void draw_pixel_rect(const RasterState& rs, const Framebuffer& fb, const PixelRect& r) {
+uint64_t draw_pixel_rect(const RasterState& rs, const Framebuffer& fb, const PixelRect& r) {
   const PixelPlacement& p = r.place;
-  if (p.w <= 0 || p.h <= 0 || (r.rgba == nullptr) == (r.depth == nullptr)) return;
+  if (p.w <= 0 || p.h <= 0 || (r.rgba == nullptr) == (r.depth == nullptr)) return 0;
   // A raster position given as NaN or infinity (glWindowPos accepts any value) covers no pixel.
-  if (!std::isfinite(p.x) || !std::isfinite(p.y)) return;
+  if (!std::isfinite(p.x) || !std::isfinite(p.y)) return 0;
   FragCtx fc;
   prepare_fragments(rs, fb, fc);
-  if (fc.noop) return;
+  if (fc.noop) return 0;
   std::vector<int> col_lo, col_hi, row_lo, row_hi;
   group_spans(p.w, p.col0, p.x, p.zoom_x, col_lo, col_hi);
   group_spans(p.h, p.row0, p.y, p.zoom_y, row_lo, row_hi);
 
   const bool direct = plain_store(fc);
   if (direct && r.rgba != nullptr && r.present == nullptr && p.zoom_x == 1.0f && p.zoom_y == 1.0f) {
-    // Zoom 1: group (n, m) is the single pixel (col_lo[0] + n, row_lo[0] + m).
-    return store_unzoomed(fc, fb, r.rgba, p.w, p.h, col_lo[0], row_lo[0]);
+    // Zoom 1: group (n, m) is the single pixel (col_lo[0] + n, row_lo[0] + m). No query
+    // counts: a plain store has no extended state (StateKey::ext).
+    store_unzoomed(fc, fb, r.rgba, p.w, p.h, col_lo[0], row_lo[0]);
+    return 0;
   }
   FragInputs in;
   if (r.rgba == nullptr) set_color(in, r.color);
@@ -241,6 +243,7 @@ void draw_pixel_rect(const RasterState& rs, const Framebuffer& fb, const PixelRe
     }
     flush();
   }
+  return fc.samples_passed;
 }
 
 void draw_stencil_rect(const RasterState& rs, const Framebuffer& fb, const PixelPlacement& p,
@@ -277,16 +280,16 @@ void draw_stencil_rect(const RasterState& rs, const Framebuffer& fb, const Pixel
   }
 }
 
-void draw_bitmap(const RasterState& rs, const Framebuffer& fb, int x, int y, int w, int h,
-                 const uint8_t* bits, const float color[4], float z, const RasterPos& raster) {
-  if (w <= 0 || h <= 0) return;
+uint64_t draw_bitmap(const RasterState& rs, const Framebuffer& fb, int x, int y, int w, int h,
+                     const uint8_t* bits, const float color[4], float z, const RasterPos& raster) {
+  if (w <= 0 || h <= 0) return 0;
   FragCtx fc;
   prepare_fragments(rs, fb, fc);
-  if (fc.noop) return;
+  if (fc.noop) return 0;
   const int64_t x0 = std::max<int64_t>(x, fc.clip_x0), y0 = std::max<int64_t>(y, fc.clip_y0);
   const int64_t x1 = std::min<int64_t>(int64_t{x} + w, int64_t{fc.clip_x1} + 1);
   const int64_t y1 = std::min<int64_t>(int64_t{y} + h, int64_t{fc.clip_y1} + 1);
-  if (x0 >= x1 || y0 >= y1) return;
+  if (x0 >= x1 || y0 >= y1) return 0;
   FragInputs in;
   set_color(in, color);
   in.z.v0 = clamp01(z) * fc.depth_max;
@@ -321,6 +324,7 @@ void draw_bitmap(const RasterState& rs, const Framebuffer& fb, int x, int y, int
       fn(fc, in, bx, by, mask);
     }
   }
+  return fc.samples_passed;
 }
 
 } // namespace pineda

@@ -42,8 +42,10 @@ struct PixelRect {
 };
 
 // Colour values are clamped to [0, 1] and depth values too before they become fragments
-// (§3.6.4 "Final Conversion").
-void draw_pixel_rect(const RasterState& rs, const Framebuffer& fb, const PixelRect& r);
+// (§3.6.4 "Final Conversion"). Returns the fragments that passed the depth and stencil
+// tests when rs.count_samples is set (occlusion queries count pixel fragments too, GL 2.1
+// §4.1.7), else 0.
+uint64_t draw_pixel_rect(const RasterState& rs, const Framebuffer& fb, const PixelRect& r);
 
 // §4.3.1: stencil indices written with only the pixel ownership and scissor tests and the
 // stencil write mask; indices are masked to the buffer's 8 bits.
@@ -53,8 +55,8 @@ void draw_stencil_rect(const RasterState& rs, const Framebuffer& fb, const Pixel
 // §3.7: fragments where bits[j * w + i] is non-zero, lower left corner at (x, y), all with
 // the raster position's colour and window z. While texturing or fog is on they are shaded
 // with `raster`'s texture coordinates, secondary colour (colour sum) and fog distance, as
-// PixelRect::raster says.
-void draw_bitmap(const RasterState& rs, const Framebuffer& fb, int x, int y, int w, int h,
-                 const uint8_t* bits, const float color[4], float z, const RasterPos& raster);
+// PixelRect::raster says. Returns the samples passed, as draw_pixel_rect.
+uint64_t draw_bitmap(const RasterState& rs, const Framebuffer& fb, int x, int y, int w, int h,
+                     const uint8_t* bits, const float color[4], float z, const RasterPos& raster);
 
 } // namespace pineda
