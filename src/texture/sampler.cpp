@@ -15,6 +15,10 @@
 #include <algorithm>
 #include <cmath>
 
+#if defined(__SSE2__) && defined(__x86_64__)
+#include <emmintrin.h>
+#endif
+
 #include "texture/tex_image.h"
 #include "texture/texture_object.h"
 
@@ -272,15 +276,25 @@ Axis axis_linear(float s, int size, GLenum wrap) {
   return a;
 }
 
+// x rounded to the nearest integer, ties to even (the default rounding mode), as nearbyint;
+// on x86-64 one conversion instruction instead of nearbyint's sequence.
+inline int64_t round_even(float x) {
+#if defined(__SSE2__) && defined(__x86_64__)
+  return _mm_cvtss_si64(_mm_set_ss(x));
+#else
+  return static_cast<int64_t>(std::nearbyint(x));
+#endif
+}
+
 // The fixed-point variant of axis_linear for REPEAT and CLAMP_TO_EDGE (see the file comment).
 // Coordinates are in 1/256 texel, rounded to nearest (even on ties, as the SIMD conversion).
-Axis axis_linear_fixed(float s, int size, GLenum wrap) {
+inline Axis axis_linear_fixed(float s, int size, GLenum wrap) {
   s = sane(s);
   Axis a;
   const bool repeat = wrap == GL_REPEAT;
   const bool pot = (size & (size - 1)) == 0;
   const float scaled = (repeat && !pot ? frac(s) : s) * float(size) * 256.0f;
-  const int64_t u = static_cast<int64_t>(std::nearbyint(scaled)) - 128;
+  const int64_t u = round_even(scaled) - 128;
   a.w8 = static_cast<int>(u & 255);
   const int64_t i0 = u >> 8;
   if (repeat && pot) {
@@ -530,6 +544,73 @@ void sample_2d_base(const SamplerView& v, int n, const float* s, const float* t,
   }
 }
 
+// One level of a 2D colour texture with REPEAT or CLAMP_TO_EDGE on both axes, as 8-bit
+// integers: the texel for NEAREST, llvmpipe's fixed-point bilinear filter for LINEAR (the same
+// arithmetic as sample_level's fixed path).
+inline void sample_level8(const LevelCtx& c, GLenum filter, float s, float t, int out[4]) {
+  const SamplerView& v = *c.v;
+  if (filter == GL_NEAREST) {
+    const uint8_t* p =
+        fetch8(c, axis_nearest(s, c.w, v.wrap_s).i0, axis_nearest(t, c.h, v.wrap_t).i0, 0);
+    for (int q = 0; q < 4; ++q)
+      out[q] = p[q];
+    return;
+  }
+  const Axis as = axis_linear_fixed(s, c.w, v.wrap_s);
+  const Axis at = axis_linear_fixed(t, c.h, v.wrap_t);
+  const uint8_t* t00 = fetch8(c, as.i0, at.i0, 0);
+  const uint8_t* t10 = fetch8(c, as.i1, at.i0, 0);
+  const uint8_t* t01 = fetch8(c, as.i0, at.i1, 0);
+  const uint8_t* t11 = fetch8(c, as.i1, at.i1, 0);
+  for (int q = 0; q < 4; ++q)
+    out[q] = lerp8(lerp8(t00[q], t10[q], as.w8), lerp8(t01[q], t11[q], as.w8), at.w8);
+}
+
+// 2D colour textures with REPEAT or CLAMP_TO_EDGE wraps, every filter: the level selection of
+// sample_texture with the texels kept as 8-bit integers until the end, which gives the same
+// results as the general loop (whose float values are exactly these integers / 255).
+void sample_2d_fixed(const SamplerView& v, int n, const float* s, const float* t,
+                     const float* lambda, float total_bias, GLenum min_img, bool mip_linear,
+                     bool mip_nearest, float (*rgba)[4]) {
+  LevelCtx levels[kMaxTexLevels];
+  for (int l = v.base_level; l <= v.max_level; ++l)
+    levels[l] = level_ctx(v, 0, l, 2);
+  for (int i = 0; i < n; ++i) {
+    const float ss = s[i];
+    const float tt = t != nullptr ? t[i] : 0.0f;
+    float lod = lambda[i] + total_bias;
+    if (!(lod == lod)) lod = 0.0f;
+    lod = std::min(lod, v.max_lod);
+    lod = std::max(lod, v.min_lod);
+    int out[4];
+    if (lod <= v.c || !(mip_linear || mip_nearest)) {
+      sample_level8(levels[v.base_level], lod <= v.c ? v.mag_filter : min_img, ss, tt, out);
+    } else if (mip_nearest) {
+      const int d = v.base_level + static_cast<int>(std::floor(std::min(lod, 64.0f) + 0.5f));
+      sample_level8(levels[clampi(d, v.base_level, v.max_level)], min_img, ss, tt, out);
+    } else {
+      const float lc = std::min(lod, 64.0f);
+      const float fl = std::floor(lc);
+      int d0 = v.base_level + static_cast<int>(fl);
+      float w = lc - fl;
+      if (d0 >= v.max_level) {
+        d0 = v.max_level;
+        w = 0.0f;
+      }
+      sample_level8(levels[d0], min_img, ss, tt, out);
+      const int w8 = static_cast<int>(w * 256.0f);
+      if (w8 > 0) {
+        int o1[4];
+        sample_level8(levels[d0 + 1], min_img, ss, tt, o1);
+        for (int q = 0; q < 4; ++q)
+          out[q] = lerp8(out[q], o1[q], w8);
+      }
+    }
+    for (int q = 0; q < 4; ++q)
+      rgba[i][q] = float(out[q]) * (1.0f / 255.0f);
+  }
+}
+
 } // namespace
 
 void sample_texture(const SamplerView& v, int n, const float* s, const float* t, const float* r,
@@ -551,6 +632,8 @@ void sample_texture(const SamplerView& v, int n, const float* s, const float* t,
           : GL_LINEAR;
   if (fixed && dims == 2 && !mip_linear && !mip_nearest && min_img == v.mag_filter)
     return sample_2d_base(v, n, s, t, min_img, rgba);
+  if (fixed && dims == 2)
+    return sample_2d_fixed(v, n, s, t, lambda, total_bias, min_img, mip_linear, mip_nearest, rgba);
   // The levels' set-up, once per call.
   LevelCtx levels[6][kMaxTexLevels];
   for (int f = 0; f < v.faces; ++f)
