@@ -72,8 +72,7 @@ template <ColorFormat F> u32x4 pack4(i32x4 r, i32x4 g, i32x4 b, i32x4 a) {
 // Clamp to [0,1] and round to 8 bits (GL 2.1 §2.14.9); NaN from a degenerate 1/w gives 0.
 inline i32x4 to_unorm8(f32x4 v) {
   const f32x4 zero = {}, one = zero + 1.0f;
-  v = v > zero ? v : zero;
-  v = v < one ? v : one;
+  v = vmin(vmax(v, zero), one);
   return __builtin_convertvector(v * 255.0f + 0.5f, i32x4);
 }
 
@@ -180,10 +179,8 @@ template <DepthPath D>
   f64x2 zc[N / 2];
   for (int h = 0; h < N / 2; ++h) {
     const f64x2 lane = {2.0 * h, 2.0 * h + 1.0};
-    f64x2 z = zr + lane * zp.dx;
-    z = z > zero ? z : zero;
-    z = z < zmax ? z : zmax;
-    zc[h] = z + 0.5;
+    const f64x2 z = zr + lane * zp.dx;
+    zc[h] = vmin(vmax(z, zero), zmax) + 0.5;
   }
   // The values are non-negative, so truncation is the floor. Below 2^31 the conversion is the
   // packed one (two lanes per instruction on SSE2); 32-bit buffers convert lane by lane.

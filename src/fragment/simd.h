@@ -33,6 +33,37 @@ inline void bits_to_lanes(unsigned m, i32x4& lo, i32x4& hi) {
   hi = (v & i32x4{16, 32, 64, 128}) != zero;
 }
 
+// a > b ? a : b and a < b ? a : b, lane by lane (b where a lane is NaN). These are exactly
+// the SSE2 max/min instructions, which GCC does not pick for the vector forms by itself.
+inline f32x4 vmax(f32x4 a, f32x4 b) {
+#if defined(__SSE2__)
+  return _mm_max_ps(a, b);
+#else
+  return a > b ? a : b;
+#endif
+}
+inline f32x4 vmin(f32x4 a, f32x4 b) {
+#if defined(__SSE2__)
+  return _mm_min_ps(a, b);
+#else
+  return a < b ? a : b;
+#endif
+}
+inline f64x2 vmax(f64x2 a, f64x2 b) {
+#if defined(__SSE2__)
+  return _mm_max_pd(a, b);
+#else
+  return a > b ? a : b;
+#endif
+}
+inline f64x2 vmin(f64x2 a, f64x2 b) {
+#if defined(__SSE2__)
+  return _mm_min_pd(a, b);
+#else
+  return a < b ? a : b;
+#endif
+}
+
 // The low and high eight bytes of `v` widened to 16-bit lanes (two 4-byte pixels each).
 inline u16x8 widen_lo(u8x16 v) {
   const u8x16 z = {};
