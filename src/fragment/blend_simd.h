@@ -15,10 +15,18 @@
 
 namespace pineda {
 
-// round(x / 255) on lanes x in [0, 255 * 255].
+// round(x / 255) on lanes x in [0, 255 * 255]. With n = x + 128, (n + (n >> 8)) >> 8 equals
+// floor(n * 257 / 65536): the two differ by floor((A + f) / 256) against floor(A / 256) for an
+// integer A and 0 <= f < 1, which are equal. The second is one high multiply on SSE2.
 inline u16x8 div255_round(u16x8 x) {
   const u16x8 n = x + 128;
+#if defined(__SSE2__)
+  const u16x8 k257 = u16x8{} + 257;
+  return reinterpret_cast<u16x8>(
+      _mm_mulhi_epu16(reinterpret_cast<__m128i>(n), reinterpret_cast<__m128i>(k257)));
+#else
   return (n + (n >> 8)) >> 8;
+#endif
 }
 
 // The alpha lane of each of the two pixels of `v` (alpha at byte offset A) in all its lanes.

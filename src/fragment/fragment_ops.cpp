@@ -354,6 +354,10 @@ template <ColorFormat F, ColorPath C, BlendPath B, bool X>
     Row dst;
     std::memcpy(&dst, row, sizeof(dst));
     combine_row4<F, C, B>(ctx, m, logic, s, dst);
+    if (m == 0xffu) {
+      std::memcpy(row, &s, sizeof(s));
+      return;
+    }
     i32x4 lanes[2];
     bits_to_lanes(m, lanes[0], lanes[1]);
     for (int h = 0; h < 2; ++h)

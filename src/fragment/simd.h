@@ -22,8 +22,15 @@ using u8x16 = uint8_t __attribute__((vector_size(16)));
 
 // Lane masks (all ones / zero per lane) of the two halves of a row to eight bits.
 inline unsigned lane_bits(i32x4 lo, i32x4 hi) {
+#if defined(__SSE2__)
+  // The lanes' sign bits, which for masks are the lanes.
+  const int l = _mm_movemask_ps(_mm_castsi128_ps(reinterpret_cast<__m128i>(lo)));
+  const int h = _mm_movemask_ps(_mm_castsi128_ps(reinterpret_cast<__m128i>(hi)));
+  return static_cast<unsigned>(l | (h << 4));
+#else
   const i32x4 b = (lo & i32x4{1, 2, 4, 8}) | (hi & i32x4{16, 32, 64, 128});
   return static_cast<unsigned>(b[0] | b[1] | b[2] | b[3]);
+#endif
 }
 
 // Eight bits to lane masks of the two halves of a row.
@@ -78,8 +85,14 @@ inline u16x8 widen_hi(u8x16 v) {
 
 // The inverse of widen_lo/widen_hi for lanes holding values in [0, 255].
 inline u8x16 narrow(u16x8 lo, u16x8 hi) {
+#if defined(__SSE2__)
+  // Saturation never applies to such lanes.
+  return reinterpret_cast<u8x16>(
+      _mm_packus_epi16(reinterpret_cast<__m128i>(lo), reinterpret_cast<__m128i>(hi)));
+#else
   return __builtin_shufflevector(reinterpret_cast<u8x16>(lo), reinterpret_cast<u8x16>(hi), 0, 2, 4,
                                  6, 8, 10, 12, 14, 16, 18, 20, 22, 24, 26, 28, 30);
+#endif
 }
 
 // Four vectors of lanes in [0, 255] (one 4-byte pixel each) packed to the sixteen bytes of four
