@@ -5,53 +5,32 @@ namespace pineda {
 
 BlendFactor blend_factor_from_gl(GLenum factor) {
   switch (factor) {
-  case GL_ZERO:
-    return BlendFactor::Zero;
-  case GL_ONE:
-    return BlendFactor::One;
-  case GL_SRC_COLOR:
-    return BlendFactor::SrcColor;
-  case GL_ONE_MINUS_SRC_COLOR:
-    return BlendFactor::OneMinusSrcColor;
-  case GL_DST_COLOR:
-    return BlendFactor::DstColor;
-  case GL_ONE_MINUS_DST_COLOR:
-    return BlendFactor::OneMinusDstColor;
-  case GL_SRC_ALPHA:
-    return BlendFactor::SrcAlpha;
-  case GL_ONE_MINUS_SRC_ALPHA:
-    return BlendFactor::OneMinusSrcAlpha;
-  case GL_DST_ALPHA:
-    return BlendFactor::DstAlpha;
-  case GL_ONE_MINUS_DST_ALPHA:
-    return BlendFactor::OneMinusDstAlpha;
-  case GL_CONSTANT_COLOR:
-    return BlendFactor::ConstColor;
-  case GL_ONE_MINUS_CONSTANT_COLOR:
-    return BlendFactor::OneMinusConstColor;
-  case GL_CONSTANT_ALPHA:
-    return BlendFactor::ConstAlpha;
-  case GL_ONE_MINUS_CONSTANT_ALPHA:
-    return BlendFactor::OneMinusConstAlpha;
-  case GL_SRC_ALPHA_SATURATE:
-    return BlendFactor::SrcAlphaSaturate;
-  default:
-    return BlendFactor::One; // the front end rejects other enums with GL_INVALID_ENUM
+  case GL_ZERO: return BlendFactor::Zero;
+  case GL_ONE: return BlendFactor::One;
+  case GL_SRC_COLOR: return BlendFactor::SrcColor;
+  case GL_ONE_MINUS_SRC_COLOR: return BlendFactor::OneMinusSrcColor;
+  case GL_DST_COLOR: return BlendFactor::DstColor;
+  case GL_ONE_MINUS_DST_COLOR: return BlendFactor::OneMinusDstColor;
+  case GL_SRC_ALPHA: return BlendFactor::SrcAlpha;
+  case GL_ONE_MINUS_SRC_ALPHA: return BlendFactor::OneMinusSrcAlpha;
+  case GL_DST_ALPHA: return BlendFactor::DstAlpha;
+  case GL_ONE_MINUS_DST_ALPHA: return BlendFactor::OneMinusDstAlpha;
+  case GL_CONSTANT_COLOR: return BlendFactor::ConstColor;
+  case GL_ONE_MINUS_CONSTANT_COLOR: return BlendFactor::OneMinusConstColor;
+  case GL_CONSTANT_ALPHA: return BlendFactor::ConstAlpha;
+  case GL_ONE_MINUS_CONSTANT_ALPHA: return BlendFactor::OneMinusConstAlpha;
+  case GL_SRC_ALPHA_SATURATE: return BlendFactor::SrcAlphaSaturate;
+  default: return BlendFactor::One; // the front end rejects other enums with GL_INVALID_ENUM
   }
 }
 
 BlendEq blend_eq_from_gl(GLenum eq) {
   switch (eq) {
-  case GL_FUNC_SUBTRACT:
-    return BlendEq::Subtract;
-  case GL_FUNC_REVERSE_SUBTRACT:
-    return BlendEq::ReverseSubtract;
-  case GL_MIN:
-    return BlendEq::Min;
-  case GL_MAX:
-    return BlendEq::Max;
-  default:
-    return BlendEq::Add;
+  case GL_FUNC_SUBTRACT: return BlendEq::Subtract;
+  case GL_FUNC_REVERSE_SUBTRACT: return BlendEq::ReverseSubtract;
+  case GL_MIN: return BlendEq::Min;
+  case GL_MAX: return BlendEq::Max;
+  default: return BlendEq::Add;
   }
 }
 

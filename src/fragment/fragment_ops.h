@@ -44,11 +44,12 @@ struct FragInputs {
   PlaneF inv_w;
   PlaneF color_w[4];
   uint8_t const_color[4] = {0, 0, 0, 0}; // RGBA for ShadePath::Const
-  const ShadeInputs* shade = nullptr;    // planes for ShadePath::PerFragment
+  const ShadeInputs* shade = nullptr;     // planes for ShadePath::PerFragment
 };
 
 struct FragCtx;
-using BlockFn = void (*)(const FragCtx& ctx, const FragInputs& in, int bx, int by, uint64_t mask);
+using BlockFn = void (*)(const FragCtx& ctx, const FragInputs& in, int bx, int by,
+                         uint64_t mask);
 
 // Everything the block loops read that is constant over a draw.
 struct FragCtx {
@@ -57,17 +58,17 @@ struct FragCtx {
   ptrdiff_t color_stride = 0;
   uint32_t* depth = nullptr;
   ptrdiff_t depth_stride = 0;
-  double depth_max = 0;     // 2^bits - 1
-  uint8_t depth_func = 0;   // StateKey::depth_func, for the generic path
-  bool depth_write = false; // for the generic path
-  uint32_t color_keep = 0;  // partial colour mask: bits of the stored pixel to keep
+  double depth_max = 0; // 2^bits - 1
+  uint8_t depth_func = 0;    // StateKey::depth_func, for the generic path
+  bool depth_write = false;  // for the generic path
+  uint32_t color_keep = 0;   // partial colour mask: bits of the stored pixel to keep
   BlendParams blend;
   // Values of the operations StateKey::ext() covers; read only by the extended instances.
-  uint8_t alpha_func = 0;     // depth_func_bits encoding (GL 2.1 §4.1.4)
-  uint8_t alpha_ref = 0;      // the reference as 8-bit fixed point (§2.14.9)
-  uint8_t* stencil = nullptr; // row 0 at the bottom, stride fb_width
-  uint8_t stencil_func = 0;   // depth_func_bits encoding (§4.1.5)
-  uint8_t stencil_ref = 0;    // clamped to [0, 255]
+  uint8_t alpha_func = 0;      // depth_func_bits encoding (GL 2.1 §4.1.4)
+  uint8_t alpha_ref = 0;       // the reference as 8-bit fixed point (§2.14.9)
+  uint8_t* stencil = nullptr;  // row 0 at the bottom, stride fb_width
+  uint8_t stencil_func = 0;    // depth_func_bits encoding (§4.1.5)
+  uint8_t stencil_ref = 0;     // clamped to [0, 255]
   uint8_t stencil_value_mask = 0xff;
   uint8_t stencil_write_mask = 0xff;
   StencilOp stencil_ops[3] = {}; // stencil fails, depth fails, depth passes
@@ -78,9 +79,9 @@ struct FragCtx {
   // Rows of a block that lie entirely inside the buffer (bx + 8 <= fb_width) are loaded and
   // stored whole, with the coverage applied as a lane select.
   int fb_width = 0;
-  bool noop = true;         // nothing can change: no colour, depth or stencil update
-  bool needs_color = false; // the colour path or the alpha test reads the primitive's colour
-  bool needs_depth = false; // the depth path reads the primitive's z
+  bool noop = true;          // nothing can change: no colour, depth or stencil update
+  bool needs_color = false;  // the colour path or the alpha test reads the primitive's colour
+  bool needs_depth = false;  // the depth path reads the primitive's z
   BlockFn fn[kShadePathCount] = {}; // indexed by ShadePath
   // Texturing, colour sum and fog per fragment (fragment/shade.h); set when the draw has
   // texturing or fog on and reads colour. Primitives then run ShadePath::PerFragment.
