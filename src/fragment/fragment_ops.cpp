@@ -149,9 +149,15 @@ template <ColorFormat F> void unpack_pixel(uint32_t px, bool has_alpha, uint8_t 
   c[3] = has_alpha ? static_cast<uint8_t>(px >> byte_shift(L::a)) : 255;
 }
 
-// Any other blend: one fragment at a time through blend_pixel (float, blend.h).
+// Any other blend: factors without the constant colour in 16-bit lanes (blend_simd.h, the
+// same bytes as blend_pixel), the others one fragment at a time through blend_pixel (float).
 template <ColorFormat F>
 void blend_generic_row(const FragCtx& ctx, unsigned m, Row& s, const Row& d) {
+  if (ctx.blend_fixed) {
+    for (int h = 0; h < 2; ++h)
+      s.v[h] = blend_fixed4<Layout<F>::a>(ctx.blend, ctx.key.has_alpha, s.v[h], d.v[h]);
+    return;
+  }
   alignas(16) uint32_t sp[N], dp[N];
   std::memcpy(sp, &s, sizeof(sp));
   std::memcpy(dp, &d, sizeof(dp));
@@ -632,7 +638,10 @@ void prepare_fragments(const RasterState& rs, const Framebuffer& fb, FragCtx& ct
     ctx.color_keep = keep_mask<ColorFormat::RGB8>(k.color_mask);
     break;
   }
-  if (k.blend) ctx.blend = make_blend_params(rs);
+  if (k.blend) {
+    ctx.blend = make_blend_params(rs);
+    ctx.blend_fixed = blend_params_fixed(ctx.blend);
+  }
   if (k.ext()) prepare_ext(rs, fb, ctx);
   ctx.fb_width = fb.width;
   ctx.clip_x0 = 0;
