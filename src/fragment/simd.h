@@ -18,6 +18,7 @@ using i32x4 = int32_t __attribute__((vector_size(16)));
 using u32x4 = uint32_t __attribute__((vector_size(16)));
 using i64x2 = int64_t __attribute__((vector_size(16)));
 using u16x8 = uint16_t __attribute__((vector_size(16)));
+using i16x8 = int16_t __attribute__((vector_size(16)));
 using u8x16 = uint8_t __attribute__((vector_size(16)));
 
 // Lane masks (all ones / zero per lane) of the two halves of a row to eight bits.
@@ -93,6 +94,18 @@ inline u8x16 narrow(u16x8 lo, u16x8 hi) {
   return __builtin_shufflevector(reinterpret_cast<u8x16>(lo), reinterpret_cast<u8x16>(hi), 0, 2, 4,
                                  6, 8, 10, 12, 14, 16, 18, 20, 22, 24, 26, 28, 30);
 #endif
+}
+
+// llvmpipe's 8-bit linear step a + floor(((b - a) w + 128) / 256) (texture/sampler.cpp lerp8) on
+// lanes holding values in [0, 255], with w in [0, 255]. (b - a) w does not fit 16 bits, so
+// w = 2h + e is split: with x = (b - a) h and y = (b - a) e, floor((2x + y + 128) / 256) equals
+// (x + ((y + 128) >> 1)) >> 7, because an odd 2K + 1 never reaches the next multiple of 256
+// past 2K. Every intermediate value fits 16 bits.
+inline i16x8 lerp8_lanes(i16x8 a, i16x8 b, int w) {
+  const i16x8 d = b - a;
+  const i16x8 x = d * static_cast<int16_t>(w >> 1);
+  const i16x8 y = d & static_cast<int16_t>(-(w & 1));
+  return a + ((x + ((y + 128) >> 1)) >> 7);
 }
 
 // Four vectors of lanes in [0, 255] (one 4-byte pixel each) packed to the sixteen bytes of four

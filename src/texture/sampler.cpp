@@ -14,11 +14,13 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 
 #if defined(__SSE2__) && defined(__x86_64__)
 #include <emmintrin.h>
 #endif
 
+#include "fragment/simd.h"
 #include "texture/tex_image.h"
 #include "texture/texture_object.h"
 
@@ -544,26 +546,34 @@ void sample_2d_base(const SamplerView& v, int n, const float* s, const float* t,
   }
 }
 
-// One level of a 2D colour texture with REPEAT or CLAMP_TO_EDGE on both axes, as 8-bit
-// integers: the texel for NEAREST, llvmpipe's fixed-point bilinear filter for LINEAR (the same
-// arithmetic as sample_level's fixed path).
-inline void sample_level8(const LevelCtx& c, GLenum filter, float s, float t, int out[4]) {
+// The texel at a fetch8 address widened to the low four 16-bit lanes.
+inline i16x8 texel_lanes(const uint8_t* p) {
+  u32x4 v = {};
+  std::memcpy(&v, p, 4);
+  return reinterpret_cast<i16x8>(widen_lo(reinterpret_cast<u8x16>(v)));
+}
+
+// One level of a 2D colour texture with REPEAT or CLAMP_TO_EDGE on both axes, as 8-bit values in
+// lanes 0..3: the texel for NEAREST, llvmpipe's fixed-point bilinear filter for LINEAR (the same
+// arithmetic as sample_level's fixed path, both rows' horizontal steps in one vector).
+inline i16x8 sample_level8(const LevelCtx& c, GLenum filter, float s, float t) {
   const SamplerView& v = *c.v;
-  if (filter == GL_NEAREST) {
-    const uint8_t* p =
-        fetch8(c, axis_nearest(s, c.w, v.wrap_s).i0, axis_nearest(t, c.h, v.wrap_t).i0, 0);
-    for (int q = 0; q < 4; ++q)
-      out[q] = p[q];
-    return;
-  }
+  if (filter == GL_NEAREST)
+    return texel_lanes(
+        fetch8(c, axis_nearest(s, c.w, v.wrap_s).i0, axis_nearest(t, c.h, v.wrap_t).i0, 0));
   const Axis as = axis_linear_fixed(s, c.w, v.wrap_s);
   const Axis at = axis_linear_fixed(t, c.h, v.wrap_t);
-  const uint8_t* t00 = fetch8(c, as.i0, at.i0, 0);
-  const uint8_t* t10 = fetch8(c, as.i1, at.i0, 0);
-  const uint8_t* t01 = fetch8(c, as.i0, at.i1, 0);
-  const uint8_t* t11 = fetch8(c, as.i1, at.i1, 0);
-  for (int q = 0; q < 4; ++q)
-    out[q] = lerp8(lerp8(t00[q], t10[q], as.w8), lerp8(t01[q], t11[q], as.w8), at.w8);
+  uint32_t p[4];
+  std::memcpy(&p[0], fetch8(c, as.i0, at.i0, 0), 4);
+  std::memcpy(&p[1], fetch8(c, as.i0, at.i1, 0), 4);
+  std::memcpy(&p[2], fetch8(c, as.i1, at.i0, 0), 4);
+  std::memcpy(&p[3], fetch8(c, as.i1, at.i1, 0), 4);
+  // Lanes 0..3 the row at.i0, lanes 4..7 the row at.i1.
+  const u32x4 left = {p[0], p[1], 0, 0}, right = {p[2], p[3], 0, 0};
+  const i16x8 rows =
+      lerp8_lanes(reinterpret_cast<i16x8>(widen_lo(reinterpret_cast<u8x16>(left))),
+                  reinterpret_cast<i16x8>(widen_lo(reinterpret_cast<u8x16>(right))), as.w8);
+  return lerp8_lanes(rows, __builtin_shufflevector(rows, rows, 4, 5, 6, 7, 4, 5, 6, 7), at.w8);
 }
 
 // 2D colour textures with REPEAT or CLAMP_TO_EDGE wraps, every filter: the level selection of
@@ -582,12 +592,12 @@ void sample_2d_fixed(const SamplerView& v, int n, const float* s, const float* t
     if (!(lod == lod)) lod = 0.0f;
     lod = std::min(lod, v.max_lod);
     lod = std::max(lod, v.min_lod);
-    int out[4];
+    i16x8 out;
     if (lod <= v.c || !(mip_linear || mip_nearest)) {
-      sample_level8(levels[v.base_level], lod <= v.c ? v.mag_filter : min_img, ss, tt, out);
+      out = sample_level8(levels[v.base_level], lod <= v.c ? v.mag_filter : min_img, ss, tt);
     } else if (mip_nearest) {
       const int d = v.base_level + static_cast<int>(std::floor(std::min(lod, 64.0f) + 0.5f));
-      sample_level8(levels[clampi(d, v.base_level, v.max_level)], min_img, ss, tt, out);
+      out = sample_level8(levels[clampi(d, v.base_level, v.max_level)], min_img, ss, tt);
     } else {
       const float lc = std::min(lod, 64.0f);
       const float fl = std::floor(lc);
@@ -597,17 +607,13 @@ void sample_2d_fixed(const SamplerView& v, int n, const float* s, const float* t
         d0 = v.max_level;
         w = 0.0f;
       }
-      sample_level8(levels[d0], min_img, ss, tt, out);
+      out = sample_level8(levels[d0], min_img, ss, tt);
       const int w8 = static_cast<int>(w * 256.0f);
-      if (w8 > 0) {
-        int o1[4];
-        sample_level8(levels[d0 + 1], min_img, ss, tt, o1);
-        for (int q = 0; q < 4; ++q)
-          out[q] = lerp8(out[q], o1[q], w8);
-      }
+      if (w8 > 0) out = lerp8_lanes(out, sample_level8(levels[d0 + 1], min_img, ss, tt), w8);
     }
-    for (int q = 0; q < 4; ++q)
-      rgba[i][q] = float(out[q]) * (1.0f / 255.0f);
+    const f32x4 f = __builtin_convertvector(__builtin_shufflevector(out, out, 0, 1, 2, 3), f32x4) *
+                    (1.0f / 255.0f);
+    std::memcpy(rgba[i], &f, sizeof(f));
   }
 }
 

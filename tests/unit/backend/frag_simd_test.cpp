@@ -190,6 +190,25 @@ TEST(FragSimd, WidenNarrowAndPackPixels) {
   }
 }
 
+TEST(FragSimd, Lerp8LanesMatchesScalarForEveryInput) {
+  for (int w = 0; w < 256; ++w) {
+    for (int a = 0; a < 256; ++a) {
+      for (int b0 = 0; b0 < 256; b0 += 8) {
+        i16x8 va = {}, vb = {};
+        for (int k = 0; k < 8; ++k) {
+          va[k] = static_cast<int16_t>(a);
+          vb[k] = static_cast<int16_t>(b0 + k);
+        }
+        const i16x8 r = lerp8_lanes(va, vb, w);
+        for (int k = 0; k < 8; ++k) {
+          const int want = a + (((b0 + k - a) * w + 128) >> 8);
+          if (r[k] != want) FAIL() << a << " " << b0 + k << " " << w;
+        }
+      }
+    }
+  }
+}
+
 uint8_t ref_unorm8(float v) {
   v = v > 0.0f ? v : 0.0f;
   v = v < 1.0f ? v : 1.0f;
