@@ -10,6 +10,7 @@
 #include <algorithm>
 #include <bit>
 #include <cmath>
+#include <cstdint>
 
 #include "fragment/fog_equation.h"
 
@@ -31,7 +32,16 @@ inline float eval(const PlaneF& p, float fi, float fj) {
 // LINEAR_MIPMAP_*) follows llvmpipe's.
 inline float fast_log2(float x) {
   int e = 0;
-  const float m = std::frexp(x, &e); // x = m 2^e, m in [1/2, 1)
+  float m;
+  const uint32_t bits = std::bit_cast<uint32_t>(x);
+  const uint32_t biased = (bits >> 23) & 0xffu;
+  if (biased != 0 && biased != 0xff) {
+    // A normal number: frexp's m and e read straight from the fields (no library call).
+    e = static_cast<int>(biased) - 126;
+    m = std::bit_cast<float>((bits & 0x807fffffu) | (126u << 23));
+  } else {
+    m = std::frexp(x, &e); // x = m 2^e, m in [1/2, 1)
+  }
   return static_cast<float>(e - 2) + 2.0f * m;
 }
 
