@@ -58,6 +58,15 @@ public:
     return u32();
   }
 
+  // An enum from a family table (the arguments one command takes, with invalid neighbours),
+  // sometimes from the general table, sometimes raw.
+  template <size_t N> GLenum e(const GLenum (&table)[N]) {
+    const uint8_t tag = u8();
+    if (tag < 200) return table[tag % N];
+    if (tag < 250) return kEnums[tag % kEnumCount];
+    return u32();
+  }
+
 private:
   static constexpr int kSpecialCount = 24;
   static float special(int k) {
@@ -131,6 +140,21 @@ private:
       GL_VENDOR, GL_RENDERER, GL_VERSION, GL_EXTENSIONS,
       // Hints.
       GL_PERSPECTIVE_CORRECTION_HINT, GL_NICEST, GL_FASTEST, GL_DONT_CARE,
+      // Capabilities and queries of the later command families.
+      GL_TEXTURE_1D, GL_TEXTURE_3D, GL_TEXTURE_CUBE_MAP, GL_TEXTURE_GEN_S, GL_TEXTURE_GEN_Q,
+      GL_MAP1_VERTEX_3, GL_MAP2_VERTEX_4, GL_MAP2_TEXTURE_COORD_2, GL_AUTO_NORMAL,
+      GL_COLOR_MATERIAL, GL_LIGHT0, GL_LIGHT7, GL_POINT_SMOOTH, GL_LINE_SMOOTH,
+      GL_POLYGON_SMOOTH, GL_POLYGON_STIPPLE, GL_COLOR_SUM, GL_FOG_COORD_ARRAY,
+      GL_SECONDARY_COLOR_ARRAY, GL_MULTISAMPLE, GL_SAMPLE_ALPHA_TO_COVERAGE, GL_RESCALE_NORMAL,
+      GL_POLYGON_OFFSET_LINE, GL_MAP_COLOR, GL_MAP_STENCIL, GL_LIST_INDEX, GL_LIST_MODE,
+      GL_NAME_STACK_DEPTH, GL_FEEDBACK_BUFFER_POINTER, GL_SELECTION_BUFFER_POINTER,
+      GL_CURRENT_RASTER_POSITION, GL_CURRENT_RASTER_TEXTURE_COORDS, GL_ACCUM_CLEAR_VALUE,
+      GL_FOG_COLOR, GL_PIXEL_MAP_I_TO_R_SIZE, GL_MAP1_GRID_DOMAIN, GL_MAP2_GRID_SEGMENTS,
+      GL_TEXTURE_BINDING_2D, GL_TEXTURE_MATRIX, GL_ACTIVE_TEXTURE, GL_CLIENT_ACTIVE_TEXTURE,
+      GL_POINT_DISTANCE_ATTENUATION, GL_LINE_STIPPLE_PATTERN, GL_ZOOM_X, GL_RED_SCALE,
+      GL_INDEX_SHIFT, GL_LIGHT_MODEL_AMBIENT, GL_CURRENT_SECONDARY_COLOR, GL_CURRENT_FOG_COORD,
+      GL_ATTRIB_STACK_DEPTH, GL_UNPACK_SKIP_IMAGES, GL_UNPACK_IMAGE_HEIGHT,
+      GL_UNPACK_SKIP_ROWS, GL_UNPACK_SKIP_PIXELS, GL_UNPACK_LSB_FIRST, GL_UNPACK_SWAP_BYTES,
   };
   static constexpr int kEnumCount = static_cast<int>(sizeof(kEnums) / sizeof(kEnums[0]));
 
