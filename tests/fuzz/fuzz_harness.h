@@ -21,12 +21,19 @@
 
 namespace pineda::fuzz {
 
-constexpr size_t kClientBytes = 1 << 16;      // vertex array memory ("arena")
-constexpr int64_t kMaxDrawCount = 4096;        // vertices per draw the harness lets through
-constexpr int64_t kMaxBufferBytes = 1 << 20;   // buffer objects the harness lets Pineda allocate
-constexpr int64_t kMaxImageBytes = 1 << 20;    // client images handed to pixel commands
-constexpr int kMaxSurface = 64;                // drawable width and height
+constexpr size_t kClientBytes = 1 << 16;     // vertex array memory ("arena")
+constexpr int64_t kMaxDrawCount = 4096;      // vertices per draw the harness lets through
+constexpr int64_t kMaxBufferBytes = 1 << 20; // buffer objects the harness lets Pineda allocate
+constexpr int64_t kMaxImageBytes = 1 << 20;  // client images handed to pixel commands
+constexpr int kMaxSurface = 64;              // drawable width and height
 constexpr uint8_t kGapPattern = 0xA5;
+
+// The pixel-store state one direction (pack or unpack) of a call uses (GL 2.1 Tables 3.1,
+// 4.5).
+struct Store {
+  int64_t row_length = 0, skip_rows = 0, skip_pixels = 0, alignment = 4;
+  int64_t image_height = 0, skip_images = 0;
+};
 
 struct Harness {
   OSMesaContext ctx = nullptr;
@@ -41,7 +48,10 @@ struct Harness {
   // Inside glBegin queries are errors, so the array limit that ArrayElement needs is taken
   // just before anything that may begin a primitive (Begin, CallList, CallLists); array state
   // cannot change until End (GL 2.1 §2.6.3).
+  // The same holds for the pixel-store state (unpack, pack), which image commands compiled
+  // into a COMPILE_AND_EXECUTE list inside Begin/End still use.
   int64_t begin_limit = -1;
+  Store begin_store[2];
   // Display lists: calls recorded into the list being compiled. One per list at most, so that
   // executing lists is a chain, not a tree (a tree of nested CallLists grows exponentially
   // with MAX_LIST_NESTING: legal GL, but no execution would finish).
@@ -80,14 +90,19 @@ inline bool inside_begin() {
 inline int64_t type_bytes(GLenum type) {
   switch (type) {
   case GL_BYTE:
-  case GL_UNSIGNED_BYTE: return 1;
+  case GL_UNSIGNED_BYTE:
+    return 1;
   case GL_SHORT:
-  case GL_UNSIGNED_SHORT: return 2;
+  case GL_UNSIGNED_SHORT:
+    return 2;
   case GL_INT:
   case GL_UNSIGNED_INT:
-  case GL_FLOAT: return 4;
-  case GL_DOUBLE: return 8;
-  default: return 0;
+  case GL_FLOAT:
+    return 4;
+  case GL_DOUBLE:
+    return 8;
+  default:
+    return 0;
   }
 }
 
@@ -98,7 +113,8 @@ public:
   Block(const Harness& h, int64_t bytes, size_t arena_offset = 0)
       : size_(bytes > 0 ? static_cast<size_t>(bytes) : 1) {
     p_ = static_cast<uint8_t*>(std::malloc(size_));
-    for (size_t k = 0; k < size_; ++k) p_[k] = h.client[(arena_offset + k) % kClientBytes];
+    for (size_t k = 0; k < size_; ++k)
+      p_[k] = h.client[(arena_offset + k) % kClientBytes];
   }
   ~Block() { std::free(p_); }
   Block(const Block&) = delete;
@@ -113,6 +129,16 @@ private:
 
 // The largest element index every enabled client-memory array can supply (gl_fuzzer.cpp).
 int64_t client_limit(const Harness& h);
+// The pixel-store state of one direction, read back from the GL (fuzz_ops_pixel.cpp).
+Store read_store(bool pack);
+// Takes what the harness needs to know inside a primitive, before a command that may begin
+// one (Begin, CallList, CallLists) when none is under way.
+inline void before_begin(Harness& h) {
+  if (inside_begin()) return;
+  h.begin_limit = client_limit(h);
+  h.begin_store[0] = read_store(false);
+  h.begin_store[1] = read_store(true);
+}
 // Pointer argument for a *Pointer call (gl_fuzzer.cpp).
 const void* array_pointer(Harness& h, Input& in);
 

@@ -7,92 +7,155 @@
 namespace pineda::fuzz {
 namespace {
 
-constexpr GLenum kTexTargets[] = {GL_TEXTURE_1D, GL_TEXTURE_2D, GL_TEXTURE_3D,
-                                  GL_TEXTURE_CUBE_MAP, GL_TEXTURE_CUBE_MAP_POSITIVE_X,
-                                  GL_PROXY_TEXTURE_2D, 0};
-
-constexpr GLenum kTexParams[] = {
-    GL_TEXTURE_MIN_FILTER, GL_TEXTURE_MAG_FILTER, GL_TEXTURE_WRAP_S, GL_TEXTURE_WRAP_T,
-    GL_TEXTURE_WRAP_R, GL_TEXTURE_BORDER_COLOR, GL_TEXTURE_PRIORITY, GL_TEXTURE_RESIDENT,
-    GL_TEXTURE_MIN_LOD, GL_TEXTURE_MAX_LOD, GL_TEXTURE_BASE_LEVEL, GL_TEXTURE_MAX_LEVEL,
-    GL_TEXTURE_LOD_BIAS, GL_DEPTH_TEXTURE_MODE, GL_TEXTURE_COMPARE_MODE,
-    GL_TEXTURE_COMPARE_FUNC, GL_GENERATE_MIPMAP, GL_TEXTURE_MAX_ANISOTROPY_EXT, 0};
-
-constexpr GLenum kTexValues[] = {
-    GL_NEAREST, GL_LINEAR, GL_NEAREST_MIPMAP_NEAREST, GL_LINEAR_MIPMAP_NEAREST,
-    GL_NEAREST_MIPMAP_LINEAR, GL_LINEAR_MIPMAP_LINEAR, GL_CLAMP, GL_REPEAT, GL_CLAMP_TO_EDGE,
-    GL_CLAMP_TO_BORDER, GL_MIRRORED_REPEAT, GL_LUMINANCE, GL_INTENSITY, GL_ALPHA,
-    GL_COMPARE_R_TO_TEXTURE, GL_NONE, GL_LEQUAL, GL_GEQUAL, GL_NEVER, GL_TRUE, 0};
-
-constexpr GLenum kEnvTargets[] = {GL_TEXTURE_ENV, GL_TEXTURE_FILTER_CONTROL, GL_POINT_SPRITE,
+constexpr GLenum kTexTargets[] = {GL_TEXTURE_1D,
+                                  GL_TEXTURE_2D,
+                                  GL_TEXTURE_3D,
+                                  GL_TEXTURE_CUBE_MAP,
+                                  GL_TEXTURE_CUBE_MAP_POSITIVE_X,
+                                  GL_PROXY_TEXTURE_2D,
                                   0};
 
-constexpr GLenum kEnvParams[] = {
-    GL_TEXTURE_ENV_MODE, GL_TEXTURE_ENV_COLOR, GL_COMBINE_RGB,  GL_COMBINE_ALPHA,
-    GL_SOURCE0_RGB,      GL_SOURCE1_RGB,      GL_SOURCE2_RGB,  GL_SOURCE0_ALPHA,
-    GL_SOURCE2_ALPHA,    GL_OPERAND0_RGB,     GL_OPERAND2_RGB, GL_OPERAND0_ALPHA,
-    GL_OPERAND1_ALPHA,   GL_RGB_SCALE,        GL_ALPHA_SCALE,  GL_TEXTURE_LOD_BIAS,
-    GL_COORD_REPLACE,    0};
+constexpr GLenum kTexParams[] = {GL_TEXTURE_MIN_FILTER,
+                                 GL_TEXTURE_MAG_FILTER,
+                                 GL_TEXTURE_WRAP_S,
+                                 GL_TEXTURE_WRAP_T,
+                                 GL_TEXTURE_WRAP_R,
+                                 GL_TEXTURE_BORDER_COLOR,
+                                 GL_TEXTURE_PRIORITY,
+                                 GL_TEXTURE_RESIDENT,
+                                 GL_TEXTURE_MIN_LOD,
+                                 GL_TEXTURE_MAX_LOD,
+                                 GL_TEXTURE_BASE_LEVEL,
+                                 GL_TEXTURE_MAX_LEVEL,
+                                 GL_TEXTURE_LOD_BIAS,
+                                 GL_DEPTH_TEXTURE_MODE,
+                                 GL_TEXTURE_COMPARE_MODE,
+                                 GL_TEXTURE_COMPARE_FUNC,
+                                 GL_GENERATE_MIPMAP,
+                                 GL_TEXTURE_MAX_ANISOTROPY_EXT,
+                                 0};
 
-constexpr GLenum kEnvValues[] = {
-    GL_MODULATE, GL_DECAL,   GL_BLEND,         GL_REPLACE,       GL_ADD,
-    GL_COMBINE,  GL_ADD_SIGNED, GL_INTERPOLATE, GL_SUBTRACT,     GL_DOT3_RGB,
-    GL_DOT3_RGBA, GL_TEXTURE, GL_CONSTANT,     GL_PRIMARY_COLOR, GL_PREVIOUS,
-    GL_TEXTURE0, GL_TEXTURE3, GL_TEXTURE4,     GL_SRC_COLOR,     GL_ONE_MINUS_SRC_COLOR,
-    GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, 0};
+constexpr GLenum kTexValues[] = {GL_NEAREST,
+                                 GL_LINEAR,
+                                 GL_NEAREST_MIPMAP_NEAREST,
+                                 GL_LINEAR_MIPMAP_NEAREST,
+                                 GL_NEAREST_MIPMAP_LINEAR,
+                                 GL_LINEAR_MIPMAP_LINEAR,
+                                 GL_CLAMP,
+                                 GL_REPEAT,
+                                 GL_CLAMP_TO_EDGE,
+                                 GL_CLAMP_TO_BORDER,
+                                 GL_MIRRORED_REPEAT,
+                                 GL_LUMINANCE,
+                                 GL_INTENSITY,
+                                 GL_ALPHA,
+                                 GL_COMPARE_R_TO_TEXTURE,
+                                 GL_NONE,
+                                 GL_LEQUAL,
+                                 GL_GEQUAL,
+                                 GL_NEVER,
+                                 GL_TRUE,
+                                 0};
+
+constexpr GLenum kEnvTargets[] = {GL_TEXTURE_ENV, GL_TEXTURE_FILTER_CONTROL, GL_POINT_SPRITE, 0};
+
+constexpr GLenum kEnvParams[] = {GL_TEXTURE_ENV_MODE, GL_TEXTURE_ENV_COLOR, GL_COMBINE_RGB,
+                                 GL_COMBINE_ALPHA,    GL_SOURCE0_RGB,       GL_SOURCE1_RGB,
+                                 GL_SOURCE2_RGB,      GL_SOURCE0_ALPHA,     GL_SOURCE2_ALPHA,
+                                 GL_OPERAND0_RGB,     GL_OPERAND2_RGB,      GL_OPERAND0_ALPHA,
+                                 GL_OPERAND1_ALPHA,   GL_RGB_SCALE,         GL_ALPHA_SCALE,
+                                 GL_TEXTURE_LOD_BIAS, GL_COORD_REPLACE,     0};
+
+constexpr GLenum kEnvValues[] = {GL_MODULATE,
+                                 GL_DECAL,
+                                 GL_BLEND,
+                                 GL_REPLACE,
+                                 GL_ADD,
+                                 GL_COMBINE,
+                                 GL_ADD_SIGNED,
+                                 GL_INTERPOLATE,
+                                 GL_SUBTRACT,
+                                 GL_DOT3_RGB,
+                                 GL_DOT3_RGBA,
+                                 GL_TEXTURE,
+                                 GL_CONSTANT,
+                                 GL_PRIMARY_COLOR,
+                                 GL_PREVIOUS,
+                                 GL_TEXTURE0,
+                                 GL_TEXTURE3,
+                                 GL_TEXTURE4,
+                                 GL_SRC_COLOR,
+                                 GL_ONE_MINUS_SRC_COLOR,
+                                 GL_SRC_ALPHA,
+                                 GL_ONE_MINUS_SRC_ALPHA,
+                                 0};
 
 constexpr GLenum kCoords[] = {GL_S, GL_T, GL_R, GL_Q, 0};
 constexpr GLenum kGenParams[] = {GL_TEXTURE_GEN_MODE, GL_OBJECT_PLANE, GL_EYE_PLANE, 0};
-constexpr GLenum kGenModes[] = {GL_OBJECT_LINEAR, GL_EYE_LINEAR,  GL_SPHERE_MAP,
+constexpr GLenum kGenModes[] = {GL_OBJECT_LINEAR, GL_EYE_LINEAR,     GL_SPHERE_MAP,
                                 GL_NORMAL_MAP,    GL_REFLECTION_MAP, 0};
 
-constexpr GLenum kUnits[] = {GL_TEXTURE0, GL_TEXTURE1, GL_TEXTURE2, GL_TEXTURE3,
+constexpr GLenum kUnits[] = {GL_TEXTURE0, GL_TEXTURE1,      GL_TEXTURE2,     GL_TEXTURE3,
                              GL_TEXTURE4, GL_TEXTURE0 + 31, GL_TEXTURE0 - 1, 0};
 
 constexpr GLenum kListModes[] = {GL_COMPILE, GL_COMPILE_AND_EXECUTE, 0};
-constexpr GLenum kListTypes[] = {GL_BYTE,  GL_UNSIGNED_BYTE, GL_SHORT,   GL_UNSIGNED_SHORT,
-                                 GL_INT,   GL_UNSIGNED_INT,  GL_FLOAT,   GL_2_BYTES,
-                                 GL_3_BYTES, GL_4_BYTES,     GL_DOUBLE,  0};
+constexpr GLenum kListTypes[] = {GL_BYTE,    GL_UNSIGNED_BYTE, GL_SHORT,  GL_UNSIGNED_SHORT,
+                                 GL_INT,     GL_UNSIGNED_INT,  GL_FLOAT,  GL_2_BYTES,
+                                 GL_3_BYTES, GL_4_BYTES,       GL_DOUBLE, 0};
 
 constexpr GLenum kRenderModes[] = {GL_RENDER, GL_SELECT, GL_FEEDBACK, 0};
-constexpr GLenum kFeedbackTypes[] = {GL_2D, GL_3D, GL_3D_COLOR, GL_3D_COLOR_TEXTURE,
-                                     GL_4D_COLOR_TEXTURE, 0};
+constexpr GLenum kFeedbackTypes[] = {
+    GL_2D, GL_3D, GL_3D_COLOR, GL_3D_COLOR_TEXTURE, GL_4D_COLOR_TEXTURE, 0};
 
-constexpr GLenum kMap1[] = {GL_MAP1_VERTEX_3,        GL_MAP1_VERTEX_4,
-                            GL_MAP1_INDEX,           GL_MAP1_COLOR_4,
-                            GL_MAP1_NORMAL,          GL_MAP1_TEXTURE_COORD_1,
-                            GL_MAP1_TEXTURE_COORD_2, GL_MAP1_TEXTURE_COORD_3,
-                            GL_MAP1_TEXTURE_COORD_4, GL_MAP2_VERTEX_3,
+constexpr GLenum kMap1[] = {GL_MAP1_VERTEX_3,
+                            GL_MAP1_VERTEX_4,
+                            GL_MAP1_INDEX,
+                            GL_MAP1_COLOR_4,
+                            GL_MAP1_NORMAL,
+                            GL_MAP1_TEXTURE_COORD_1,
+                            GL_MAP1_TEXTURE_COORD_2,
+                            GL_MAP1_TEXTURE_COORD_3,
+                            GL_MAP1_TEXTURE_COORD_4,
+                            GL_MAP2_VERTEX_3,
                             0};
-constexpr GLenum kMap2[] = {GL_MAP2_VERTEX_3,        GL_MAP2_VERTEX_4,
-                            GL_MAP2_INDEX,           GL_MAP2_COLOR_4,
-                            GL_MAP2_NORMAL,          GL_MAP2_TEXTURE_COORD_1,
-                            GL_MAP2_TEXTURE_COORD_2, GL_MAP2_TEXTURE_COORD_3,
-                            GL_MAP2_TEXTURE_COORD_4, GL_MAP1_VERTEX_4,
+constexpr GLenum kMap2[] = {GL_MAP2_VERTEX_3,
+                            GL_MAP2_VERTEX_4,
+                            GL_MAP2_INDEX,
+                            GL_MAP2_COLOR_4,
+                            GL_MAP2_NORMAL,
+                            GL_MAP2_TEXTURE_COORD_1,
+                            GL_MAP2_TEXTURE_COORD_2,
+                            GL_MAP2_TEXTURE_COORD_3,
+                            GL_MAP2_TEXTURE_COORD_4,
+                            GL_MAP1_VERTEX_4,
                             0};
 constexpr GLenum kMapQueries[] = {GL_COEFF, GL_ORDER, GL_DOMAIN, 0};
 
 constexpr GLenum kLights[] = {GL_LIGHT0, GL_LIGHT1, GL_LIGHT7, GL_LIGHT0 + 8, 0};
-constexpr GLenum kLightParams[] = {GL_AMBIENT,  GL_DIFFUSE,           GL_SPECULAR,
-                                   GL_POSITION, GL_SPOT_DIRECTION,    GL_SPOT_EXPONENT,
-                                   GL_SPOT_CUTOFF, GL_CONSTANT_ATTENUATION,
-                                   GL_LINEAR_ATTENUATION, GL_QUADRATIC_ATTENUATION, 0};
+constexpr GLenum kLightParams[] = {GL_AMBIENT,
+                                   GL_DIFFUSE,
+                                   GL_SPECULAR,
+                                   GL_POSITION,
+                                   GL_SPOT_DIRECTION,
+                                   GL_SPOT_EXPONENT,
+                                   GL_SPOT_CUTOFF,
+                                   GL_CONSTANT_ATTENUATION,
+                                   GL_LINEAR_ATTENUATION,
+                                   GL_QUADRATIC_ATTENUATION,
+                                   0};
 constexpr GLenum kFaces[] = {GL_FRONT, GL_BACK, GL_FRONT_AND_BACK, 0};
-constexpr GLenum kMaterialParams[] = {GL_AMBIENT,  GL_DIFFUSE,   GL_SPECULAR,
-                                      GL_EMISSION, GL_SHININESS, GL_AMBIENT_AND_DIFFUSE,
-                                      GL_COLOR_INDEXES, 0};
+constexpr GLenum kMaterialParams[] = {
+    GL_AMBIENT,       GL_DIFFUSE, GL_SPECULAR, GL_EMISSION, GL_SHININESS, GL_AMBIENT_AND_DIFFUSE,
+    GL_COLOR_INDEXES, 0};
 constexpr GLenum kLightModelParams[] = {GL_LIGHT_MODEL_AMBIENT, GL_LIGHT_MODEL_LOCAL_VIEWER,
-                                        GL_LIGHT_MODEL_TWO_SIDE,
-                                        GL_LIGHT_MODEL_COLOR_CONTROL, 0};
+                                        GL_LIGHT_MODEL_TWO_SIDE, GL_LIGHT_MODEL_COLOR_CONTROL, 0};
 
-constexpr GLenum kFogParams[] = {GL_FOG_MODE,  GL_FOG_DENSITY, GL_FOG_START,
-                                 GL_FOG_END,   GL_FOG_INDEX,   GL_FOG_COLOR,
-                                 GL_FOG_COORD_SRC, 0};
+constexpr GLenum kFogParams[] = {GL_FOG_MODE,  GL_FOG_DENSITY, GL_FOG_START,     GL_FOG_END,
+                                 GL_FOG_INDEX, GL_FOG_COLOR,   GL_FOG_COORD_SRC, 0};
 constexpr GLenum kFogValues[] = {GL_LINEAR, GL_EXP, GL_EXP2, GL_FOG_COORD, GL_FRAGMENT_DEPTH, 0};
 
 constexpr GLenum kPointParams[] = {GL_POINT_SIZE_MIN, GL_POINT_SIZE_MAX,
-                                   GL_POINT_FADE_THRESHOLD_SIZE,
-                                   GL_POINT_DISTANCE_ATTENUATION, 0};
+                                   GL_POINT_FADE_THRESHOLD_SIZE, GL_POINT_DISTANCE_ATTENUATION, 0};
 
 constexpr GLenum kQueryTargets[] = {GL_SAMPLES_PASSED, 0};
 constexpr GLenum kQueryParams[] = {GL_QUERY_COUNTER_BITS, GL_CURRENT_QUERY, GL_QUERY_RESULT,
@@ -100,31 +163,43 @@ constexpr GLenum kQueryParams[] = {GL_QUERY_COUNTER_BITS, GL_CURRENT_QUERY, GL_Q
 
 constexpr GLenum kAccumOps[] = {GL_ACCUM, GL_LOAD, GL_RETURN, GL_MULT, GL_ADD, 0};
 
-constexpr GLenum kBuffers[] = {GL_FRONT, GL_BACK,  GL_FRONT_LEFT, GL_FRONT_RIGHT, GL_LEFT,
-                               GL_NONE,  GL_AUX0,  GL_FRONT_AND_BACK, 0};
+constexpr GLenum kBuffers[] = {GL_FRONT,       GL_BACK,           GL_FRONT_LEFT,
+                               GL_FRONT_RIGHT, GL_LEFT,           GL_NONE,
+                               GL_AUX0,        GL_FRONT_AND_BACK, 0};
 
-constexpr GLenum kStencilOps[] = {GL_KEEP, GL_ZERO, GL_REPLACE, GL_INCR, GL_DECR, GL_INVERT,
-                                  GL_INCR_WRAP, GL_DECR_WRAP, 0};
+constexpr GLenum kStencilOps[] = {GL_KEEP,   GL_ZERO,      GL_REPLACE,   GL_INCR, GL_DECR,
+                                  GL_INVERT, GL_INCR_WRAP, GL_DECR_WRAP, 0};
 
-constexpr GLenum kLogicOps[] = {GL_CLEAR, GL_AND,  GL_COPY, GL_XOR, GL_OR,   GL_NOR,
+constexpr GLenum kLogicOps[] = {GL_CLEAR, GL_AND,    GL_COPY, GL_XOR, GL_OR,   GL_NOR,
                                 GL_EQUIV, GL_INVERT, GL_NAND, GL_SET, GL_NOOP, 0};
 
-constexpr GLenum kFuncs[] = {GL_NEVER,  GL_LESS,   GL_EQUAL,  GL_LEQUAL, GL_GREATER,
+constexpr GLenum kFuncs[] = {GL_NEVER,    GL_LESS,   GL_EQUAL,  GL_LEQUAL, GL_GREATER,
                              GL_NOTEQUAL, GL_GEQUAL, GL_ALWAYS, 0};
 
 // Values GL reads or writes through the vector forms, per pname (Tables 6.x).
-int64_t tex_param_count(GLenum p) { return p == GL_TEXTURE_BORDER_COLOR ? 4 : 1; }
-int64_t env_count(GLenum p) { return p == GL_TEXTURE_ENV_COLOR ? 4 : 1; }
-int64_t gen_count(GLenum p) { return p == GL_OBJECT_PLANE || p == GL_EYE_PLANE ? 4 : 1; }
-int64_t fog_count(GLenum p) { return p == GL_FOG_COLOR ? 4 : 1; }
+int64_t tex_param_count(GLenum p) {
+  return p == GL_TEXTURE_BORDER_COLOR ? 4 : 1;
+}
+int64_t env_count(GLenum p) {
+  return p == GL_TEXTURE_ENV_COLOR ? 4 : 1;
+}
+int64_t gen_count(GLenum p) {
+  return p == GL_OBJECT_PLANE || p == GL_EYE_PLANE ? 4 : 1;
+}
+int64_t fog_count(GLenum p) {
+  return p == GL_FOG_COLOR ? 4 : 1;
+}
 int64_t light_count(GLenum p) {
   switch (p) {
   case GL_AMBIENT:
   case GL_DIFFUSE:
   case GL_SPECULAR:
-  case GL_POSITION: return 4;
-  case GL_SPOT_DIRECTION: return 3;
-  default: return 1;
+  case GL_POSITION:
+    return 4;
+  case GL_SPOT_DIRECTION:
+    return 3;
+  default:
+    return 1;
   }
 }
 int64_t material_count(GLenum p) {
@@ -133,25 +208,34 @@ int64_t material_count(GLenum p) {
   case GL_DIFFUSE:
   case GL_SPECULAR:
   case GL_EMISSION:
-  case GL_AMBIENT_AND_DIFFUSE: return 4;
-  case GL_COLOR_INDEXES: return 3;
-  default: return 1;
+  case GL_AMBIENT_AND_DIFFUSE:
+    return 4;
+  case GL_COLOR_INDEXES:
+    return 3;
+  default:
+    return 1;
   }
 }
-int64_t light_model_count(GLenum p) { return p == GL_LIGHT_MODEL_AMBIENT ? 4 : 1; }
-int64_t point_count(GLenum p) { return p == GL_POINT_DISTANCE_ATTENUATION ? 3 : 1; }
+int64_t light_model_count(GLenum p) {
+  return p == GL_LIGHT_MODEL_AMBIENT ? 4 : 1;
+}
+int64_t point_count(GLenum p) {
+  return p == GL_POINT_DISTANCE_ATTENUATION ? 3 : 1;
+}
 
 // Floats of a `count`-value vector argument, exact size, values from the input.
 struct Floats {
   Floats(const Harness& h, Input& in, int64_t count) : b(h, count * 4) {
-    for (int64_t k = 0; k < count; ++k) b.as<GLfloat>()[k] = in.f();
+    for (int64_t k = 0; k < count; ++k)
+      b.as<GLfloat>()[k] = in.f();
   }
   GLfloat* get() { return b.as<GLfloat>(); }
   Block b;
 };
 struct Ints {
   Ints(const Harness& h, Input& in, int64_t count) : b(h, count * 4) {
-    for (int64_t k = 0; k < count; ++k) b.as<GLint>()[k] = in.i();
+    for (int64_t k = 0; k < count; ++k)
+      b.as<GLint>()[k] = in.i();
   }
   GLint* get() { return b.as<GLint>(); }
   Block b;
@@ -182,7 +266,8 @@ void op_texture_state(Harness& h, Input& in) {
   case 1: {
     const GLsizei n = name_count(in);
     Block names(h, n > 0 ? n * 4 : 0);
-    for (GLsizei k = 0; k < n; ++k) names.as<GLuint>()[k] = name(in);
+    for (GLsizei k = 0; k < n; ++k)
+      names.as<GLuint>()[k] = name(in);
     glDeleteTextures(n, names.as<GLuint>());
     break;
   }
@@ -192,7 +277,9 @@ void op_texture_state(Harness& h, Input& in) {
     glBindTexture(t, name(in));
     break;
   }
-  case 4: glIsTexture(name(in)); break;
+  case 4:
+    glIsTexture(name(in));
+    break;
   case 5: {
     const GLsizei n = name_count(in);
     Block names(h, n > 0 ? n * 4 : 0), prio(h, n > 0 ? n * 4 : 0);
@@ -206,7 +293,8 @@ void op_texture_state(Harness& h, Input& in) {
   case 6: {
     const GLsizei n = name_count(in);
     Block names(h, n > 0 ? n * 4 : 0), res(h, n > 0 ? n : 0);
-    for (GLsizei k = 0; k < n; ++k) names.as<GLuint>()[k] = name(in);
+    for (GLsizei k = 0; k < n; ++k)
+      names.as<GLuint>()[k] = name(in);
     glAreTexturesResident(n, names.as<GLuint>(), res.as<GLboolean>());
     break;
   }
@@ -235,8 +323,10 @@ void op_texture_state(Harness& h, Input& in) {
   case 11: {
     const GLenum t = in.e(kTexTargets), p = in.e(kTexParams);
     Block v(h, tex_param_count(p) * 4);
-    if (in.u8() & 1) glGetTexParameterfv(t, p, v.as<GLfloat>());
-    else glGetTexParameteriv(t, p, v.as<GLint>());
+    if (in.u8() & 1)
+      glGetTexParameterfv(t, p, v.as<GLfloat>());
+    else
+      glGetTexParameteriv(t, p, v.as<GLint>());
     break;
   }
   case 12: {
@@ -247,7 +337,9 @@ void op_texture_state(Harness& h, Input& in) {
   case 13: {
     const GLenum t = in.e(kEnvTargets), p = in.e(kEnvParams);
     switch (in.u8() % 4) {
-    case 0: glTexEnvf(t, p, in.f()); break;
+    case 0:
+      glTexEnvf(t, p, in.f());
+      break;
     case 1: {
       Floats v(h, in, env_count(p));
       glTexEnvfv(t, p, v.get());
@@ -260,8 +352,10 @@ void op_texture_state(Harness& h, Input& in) {
     }
     default: {
       Block v(h, env_count(p) * 4);
-      if (in.u8() & 1) glGetTexEnvfv(t, p, v.as<GLfloat>());
-      else glGetTexEnviv(t, p, v.as<GLint>());
+      if (in.u8() & 1)
+        glGetTexEnvfv(t, p, v.as<GLfloat>());
+      else
+        glGetTexEnviv(t, p, v.as<GLint>());
       break;
     }
     }
@@ -270,9 +364,15 @@ void op_texture_state(Harness& h, Input& in) {
   case 14: {
     const GLenum c = in.e(kCoords), p = in.e(kGenParams);
     switch (in.u8() % 7) {
-    case 0: glTexGeni(c, p, static_cast<GLint>(in.e(kGenModes))); break;
-    case 1: glTexGenf(c, p, in.f()); break;
-    case 2: glTexGend(c, p, in.d()); break;
+    case 0:
+      glTexGeni(c, p, static_cast<GLint>(in.e(kGenModes)));
+      break;
+    case 1:
+      glTexGenf(c, p, in.f());
+      break;
+    case 2:
+      glTexGend(c, p, in.d());
+      break;
     case 3: {
       Floats v(h, in, gen_count(p));
       glTexGenfv(c, p, v.get());
@@ -285,31 +385,50 @@ void op_texture_state(Harness& h, Input& in) {
     }
     case 5: {
       Block v(h, gen_count(p) * 8);
-      for (int64_t k = 0; k < gen_count(p); ++k) v.as<GLdouble>()[k] = in.d();
+      for (int64_t k = 0; k < gen_count(p); ++k)
+        v.as<GLdouble>()[k] = in.d();
       glTexGendv(c, p, v.as<GLdouble>());
       break;
     }
     default: {
       Block v(h, gen_count(p) * 8);
       switch (in.u8() % 3) {
-      case 0: glGetTexGeniv(c, p, v.as<GLint>()); break;
-      case 1: glGetTexGenfv(c, p, v.as<GLfloat>()); break;
-      default: glGetTexGendv(c, p, v.as<GLdouble>()); break;
+      case 0:
+        glGetTexGeniv(c, p, v.as<GLint>());
+        break;
+      case 1:
+        glGetTexGenfv(c, p, v.as<GLfloat>());
+        break;
+      default:
+        glGetTexGendv(c, p, v.as<GLdouble>());
+        break;
       }
       break;
     }
     }
     break;
   }
-  case 15: glActiveTexture(in.e(kUnits)); break;
-  case 16: glClientActiveTexture(in.e(kUnits)); break;
+  case 15:
+    glActiveTexture(in.e(kUnits));
+    break;
+  case 16:
+    glClientActiveTexture(in.e(kUnits));
+    break;
   case 17: {
     const GLenum u = in.e(kUnits);
     switch (in.u8() % 6) {
-    case 0: glMultiTexCoord1f(u, in.f()); break;
-    case 1: glMultiTexCoord2f(u, in.f(), in.f()); break;
-    case 2: glMultiTexCoord3d(u, in.d(), in.d(), in.d()); break;
-    case 3: glMultiTexCoord4i(u, in.i(), in.i(), in.i(), in.i()); break;
+    case 0:
+      glMultiTexCoord1f(u, in.f());
+      break;
+    case 1:
+      glMultiTexCoord2f(u, in.f(), in.f());
+      break;
+    case 2:
+      glMultiTexCoord3d(u, in.d(), in.d(), in.d());
+      break;
+    case 3:
+      glMultiTexCoord4i(u, in.i(), in.i(), in.i(), in.i());
+      break;
     case 4: {
       const GLshort v[4] = {static_cast<GLshort>(in.i()), static_cast<GLshort>(in.i()),
                             static_cast<GLshort>(in.i()), static_cast<GLshort>(in.i())};
@@ -332,8 +451,9 @@ void op_texture_state(Harness& h, Input& in) {
     glTexCoordPointer(size, type, stride, array_pointer(h, in));
     break;
   }
-  default: glTexCoord3s(static_cast<GLshort>(in.i()), static_cast<GLshort>(in.i()),
-                        static_cast<GLshort>(in.i()));
+  default:
+    glTexCoord3s(static_cast<GLshort>(in.i()), static_cast<GLshort>(in.i()),
+                 static_cast<GLshort>(in.i()));
     break;
   }
 }
@@ -359,7 +479,7 @@ void op_lists(Harness& h, Input& in) {
   case 3: {
     const GLuint list = name(in);
     if (compiling && h.list_calls++ > 0) return;
-    if (!inside_begin()) h.begin_limit = client_limit(h);
+    before_begin(h);
     glCallList(list);
     break;
   }
@@ -374,12 +494,15 @@ void op_lists(Harness& h, Input& in) {
       per = 2 + static_cast<int64_t>(type - GL_2_BYTES);
     if (type == GL_DOUBLE) per = 0;
     Block names(h, n > 0 ? n * per : 0);
-    for (int64_t k = 0; k < (n > 0 ? n * per : 0); ++k) names.as<uint8_t>()[k] = in.u8() % 14;
-    if (!inside_begin()) h.begin_limit = client_limit(h);
+    for (int64_t k = 0; k < (n > 0 ? n * per : 0); ++k)
+      names.as<uint8_t>()[k] = in.u8() % 14;
+    before_begin(h);
     glCallLists(n, type, names.get());
     break;
   }
-  case 5: glListBase(name(in)); break;
+  case 5:
+    glListBase(name(in));
+    break;
   case 6: {
     // Ranges beyond a few thousand names only make Gen/DeleteLists slow, not different.
     const GLsizei range = in.u8() >= 250 ? -1 : static_cast<GLsizei>(in.u8() % 40);
@@ -392,7 +515,9 @@ void op_lists(Harness& h, Input& in) {
     glDeleteLists(first, range);
     break;
   }
-  default: glIsList(name(in)); break;
+  default:
+    glIsList(name(in));
+    break;
   }
 }
 
@@ -415,12 +540,24 @@ void op_select_feedback(Harness& h, Input& in) {
     glFeedbackBuffer(size, type, buf);
     break;
   }
-  case 2: glRenderMode(in.e(kRenderModes)); break;
-  case 3: glInitNames(); break;
-  case 4: glPushName(name(in)); break;
-  case 5: glPopName(); break;
-  case 6: glLoadName(name(in)); break;
-  case 7: glPassThrough(in.f()); break;
+  case 2:
+    glRenderMode(in.e(kRenderModes));
+    break;
+  case 3:
+    glInitNames();
+    break;
+  case 4:
+    glPushName(name(in));
+    break;
+  case 5:
+    glPopName();
+    break;
+  case 6:
+    glLoadName(name(in));
+    break;
+  case 7:
+    glPassThrough(in.f());
+    break;
   default: {
     void* p = nullptr;
     glGetPointerv(in.u8() & 1 ? GL_SELECTION_BUFFER_POINTER : GL_FEEDBACK_BUFFER_POINTER, &p);
@@ -437,26 +574,33 @@ int64_t map_k(GLenum target) {
   case GL_MAP1_INDEX:
   case GL_MAP2_INDEX:
   case GL_MAP1_TEXTURE_COORD_1:
-  case GL_MAP2_TEXTURE_COORD_1: return 1;
+  case GL_MAP2_TEXTURE_COORD_1:
+    return 1;
   case GL_MAP1_TEXTURE_COORD_2:
-  case GL_MAP2_TEXTURE_COORD_2: return 2;
+  case GL_MAP2_TEXTURE_COORD_2:
+    return 2;
   case GL_MAP1_VERTEX_3:
   case GL_MAP2_VERTEX_3:
   case GL_MAP1_NORMAL:
   case GL_MAP2_NORMAL:
   case GL_MAP1_TEXTURE_COORD_3:
-  case GL_MAP2_TEXTURE_COORD_3: return 3;
+  case GL_MAP2_TEXTURE_COORD_3:
+    return 3;
   case GL_MAP1_VERTEX_4:
   case GL_MAP2_VERTEX_4:
   case GL_MAP1_COLOR_4:
   case GL_MAP2_COLOR_4:
   case GL_MAP1_TEXTURE_COORD_4:
-  case GL_MAP2_TEXTURE_COORD_4: return 4;
-  default: return 0;
+  case GL_MAP2_TEXTURE_COORD_4:
+    return 4;
+  default:
+    return 0;
   }
 }
 
-bool is_map2(GLenum target) { return target >= GL_MAP2_COLOR_4 && target <= GL_MAP2_VERTEX_4; }
+bool is_map2(GLenum target) {
+  return target >= GL_MAP2_COLOR_4 && target <= GL_MAP2_VERTEX_4;
+}
 
 // An order or stride: small, sometimes anything.
 GLint small_or_any(Input& in) {
@@ -492,9 +636,11 @@ void op_map(Harness& h, Input& in, bool two, bool dbl) {
     }
   }
   if (!two) {
-    if (dbl) glMap1d(target, u1, u2, ustride, uorder, pts.as<GLdouble>());
-    else glMap1f(target, static_cast<float>(u1), static_cast<float>(u2), ustride, uorder,
-                 pts.as<GLfloat>());
+    if (dbl)
+      glMap1d(target, u1, u2, ustride, uorder, pts.as<GLdouble>());
+    else
+      glMap1f(target, static_cast<float>(u1), static_cast<float>(u2), ustride, uorder,
+              pts.as<GLfloat>());
   } else if (dbl) {
     glMap2d(target, u1, u2, ustride, uorder, v1, v2, vstride, vorder, pts.as<GLdouble>());
   } else {
@@ -515,10 +661,17 @@ void op_get_map(Harness& h, Input& in) {
     GLint order[2] = {0, 0};
     glGetMapiv(target, GL_ORDER, order);
     switch (query) {
-    case GL_COEFF: count = int64_t{order[0]} * (two ? order[1] : 1) * k; break;
-    case GL_ORDER: count = two ? 2 : 1; break;
-    case GL_DOMAIN: count = two ? 4 : 2; break;
-    default: break;
+    case GL_COEFF:
+      count = int64_t{order[0]} * (two ? order[1] : 1) * k;
+      break;
+    case GL_ORDER:
+      count = two ? 2 : 1;
+      break;
+    case GL_DOMAIN:
+      count = two ? 4 : 2;
+      break;
+    default:
+      break;
     }
   }
   if (count * 8 > kMaxImageBytes) return;
@@ -551,23 +704,47 @@ GLint grid(Input& in) {
 
 void op_eval(Harness& h, Input& in) {
   switch (in.u8() % 14) {
-  case 0: op_map(h, in, false, false); break;
-  case 1: op_map(h, in, false, true); break;
-  case 2: op_map(h, in, true, false); break;
-  case 3: op_map(h, in, true, true); break;
-  case 4: op_get_map(h, in); break;
-  case 5: glMapGrid1f(grid(in), in.f(), in.f()); break;
-  case 6: glMapGrid2d(grid(in), in.d(), in.d(), grid(in), in.d(), in.d()); break;
-  case 7: glEvalCoord1f(in.f()); break;
-  case 8: glEvalCoord2d(in.d(), in.d()); break;
+  case 0:
+    op_map(h, in, false, false);
+    break;
+  case 1:
+    op_map(h, in, false, true);
+    break;
+  case 2:
+    op_map(h, in, true, false);
+    break;
+  case 3:
+    op_map(h, in, true, true);
+    break;
+  case 4:
+    op_get_map(h, in);
+    break;
+  case 5:
+    glMapGrid1f(grid(in), in.f(), in.f());
+    break;
+  case 6:
+    glMapGrid2d(grid(in), in.d(), in.d(), grid(in), in.d(), in.d());
+    break;
+  case 7:
+    glEvalCoord1f(in.f());
+    break;
+  case 8:
+    glEvalCoord2d(in.d(), in.d());
+    break;
   case 9: {
     const GLfloat v[2] = {in.f(), in.f()};
-    if (in.u8() & 1) glEvalCoord2fv(v);
-    else glEvalCoord1fv(v);
+    if (in.u8() & 1)
+      glEvalCoord2fv(v);
+    else
+      glEvalCoord1fv(v);
     break;
   }
-  case 10: glEvalPoint1(grid(in)); break;
-  case 11: glEvalPoint2(grid(in), grid(in)); break;
+  case 10:
+    glEvalPoint1(grid(in));
+    break;
+  case 11:
+    glEvalPoint2(grid(in), grid(in));
+    break;
   case 12: {
     // Meshes are bounded: an 80 x 80 grid at most per call.
     const GLenum mode = in.e();
@@ -613,8 +790,10 @@ void op_lighting(Harness& h, Input& in) {
   case 4: {
     const GLenum l = in.e(kLights), p = in.e(kLightParams);
     Block v(h, light_count(p) * 4);
-    if (in.u8() & 1) glGetLightfv(l, p, v.as<GLfloat>());
-    else glGetLightiv(l, p, v.as<GLint>());
+    if (in.u8() & 1)
+      glGetLightfv(l, p, v.as<GLfloat>());
+    else
+      glGetLightiv(l, p, v.as<GLint>());
     break;
   }
   case 5: {
@@ -631,22 +810,30 @@ void op_lighting(Harness& h, Input& in) {
   case 7: {
     const GLenum f = in.e(kFaces), p = in.e(kMaterialParams);
     Ints v(h, in, material_count(p));
-    if (in.u8() & 1) glMaterialiv(f, p, v.get());
-    else glMateriali(f, p, v.get()[0]);
+    if (in.u8() & 1)
+      glMaterialiv(f, p, v.get());
+    else
+      glMateriali(f, p, v.get()[0]);
     break;
   }
   case 8: {
     const GLenum f = in.e(kFaces), p = in.e(kMaterialParams);
     Block v(h, material_count(p) * 4);
-    if (in.u8() & 1) glGetMaterialfv(f, p, v.as<GLfloat>());
-    else glGetMaterialiv(f, p, v.as<GLint>());
+    if (in.u8() & 1)
+      glGetMaterialfv(f, p, v.as<GLfloat>());
+    else
+      glGetMaterialiv(f, p, v.as<GLint>());
     break;
   }
   case 9: {
     const GLenum p = in.e(kLightModelParams);
     switch (in.u8() % 4) {
-    case 0: glLightModelf(p, in.f()); break;
-    case 1: glLightModeli(p, in.i()); break;
+    case 0:
+      glLightModelf(p, in.f());
+      break;
+    case 1:
+      glLightModeli(p, in.i());
+      break;
     case 2: {
       Floats v(h, in, light_model_count(p));
       glLightModelfv(p, v.get());
@@ -669,8 +856,12 @@ void op_lighting(Harness& h, Input& in) {
     // Fog and the fog coordinate (§3.10, §2.7).
     const GLenum p = in.e(kFogParams);
     switch (in.u8() % 9) {
-    case 0: glFogf(p, in.f()); break;
-    case 1: glFogi(p, static_cast<GLint>(in.e(kFogValues))); break;
+    case 0:
+      glFogf(p, in.f());
+      break;
+    case 1:
+      glFogi(p, static_cast<GLint>(in.e(kFogValues)));
+      break;
     case 2: {
       Floats v(h, in, fog_count(p));
       glFogfv(p, v.get());
@@ -681,8 +872,12 @@ void op_lighting(Harness& h, Input& in) {
       glFogiv(p, v.get());
       break;
     }
-    case 4: glFogCoordf(in.f()); break;
-    case 5: glFogCoordd(in.d()); break;
+    case 4:
+      glFogCoordf(in.f());
+      break;
+    case 5:
+      glFogCoordd(in.d());
+      break;
     case 6: {
       const GLfloat v = in.f();
       glFogCoordfv(&v);
@@ -707,20 +902,42 @@ void op_lighting(Harness& h, Input& in) {
 
 void op_fragment_misc(Harness& h, Input& in) {
   switch (in.u8() % 24) {
-  case 0: glScissor(in.i(), in.i(), in.i(), in.i()); break;
-  case 1: glAlphaFunc(in.e(kFuncs), in.f()); break;
-  case 2: glStencilFunc(in.e(kFuncs), in.i(), in.u32()); break;
-  case 3: glStencilOp(in.e(kStencilOps), in.e(kStencilOps), in.e(kStencilOps)); break;
-  case 4: glStencilMask(in.u32()); break;
-  case 5: glLogicOp(in.e(kLogicOps)); break;
-  case 6: glDrawBuffer(in.e(kBuffers)); break;
-  case 7: glReadBuffer(in.e(kBuffers)); break;
-  case 8: glPointSize(in.f()); break;
+  case 0:
+    glScissor(in.i(), in.i(), in.i(), in.i());
+    break;
+  case 1:
+    glAlphaFunc(in.e(kFuncs), in.f());
+    break;
+  case 2:
+    glStencilFunc(in.e(kFuncs), in.i(), in.u32());
+    break;
+  case 3:
+    glStencilOp(in.e(kStencilOps), in.e(kStencilOps), in.e(kStencilOps));
+    break;
+  case 4:
+    glStencilMask(in.u32());
+    break;
+  case 5:
+    glLogicOp(in.e(kLogicOps));
+    break;
+  case 6:
+    glDrawBuffer(in.e(kBuffers));
+    break;
+  case 7:
+    glReadBuffer(in.e(kBuffers));
+    break;
+  case 8:
+    glPointSize(in.f());
+    break;
   case 9: {
     const GLenum p = in.e(kPointParams);
     switch (in.u8() % 4) {
-    case 0: glPointParameterf(p, in.f()); break;
-    case 1: glPointParameteri(p, in.i()); break;
+    case 0:
+      glPointParameterf(p, in.f());
+      break;
+    case 1:
+      glPointParameteri(p, in.i());
+      break;
     case 2: {
       Floats v(h, in, point_count(p));
       glPointParameterfv(p, v.get());
@@ -734,20 +951,44 @@ void op_fragment_misc(Harness& h, Input& in) {
     }
     break;
   }
-  case 10: glLineWidth(in.f()); break;
-  case 11: glLineStipple(in.i(), static_cast<GLushort>(in.u16())); break;
-  case 12: glPolygonOffset(in.f(), in.f()); break;
-  case 13: glAccum(in.e(kAccumOps), in.f()); break;
-  case 14: glClearAccum(in.f(), in.f(), in.f(), in.f()); break;
-  case 15: glSampleCoverage(in.f(), in.u8() & 1); break;
-  case 16: glIndexMask(in.u32()); break;
-  case 17: glClearIndex(in.f()); break;
+  case 10:
+    glLineWidth(in.f());
+    break;
+  case 11:
+    glLineStipple(in.i(), static_cast<GLushort>(in.u16()));
+    break;
+  case 12:
+    glPolygonOffset(in.f(), in.f());
+    break;
+  case 13:
+    glAccum(in.e(kAccumOps), in.f());
+    break;
+  case 14:
+    glClearAccum(in.f(), in.f(), in.f(), in.f());
+    break;
+  case 15:
+    glSampleCoverage(in.f(), in.u8() & 1);
+    break;
+  case 16:
+    glIndexMask(in.u32());
+    break;
+  case 17:
+    glClearIndex(in.f());
+    break;
   case 18: {
     switch (in.u8() % 5) {
-    case 0: glIndexi(in.i()); break;
-    case 1: glIndexf(in.f()); break;
-    case 2: glIndexd(in.d()); break;
-    case 3: glIndexub(in.u8()); break;
+    case 0:
+      glIndexi(in.i());
+      break;
+    case 1:
+      glIndexf(in.f());
+      break;
+    case 2:
+      glIndexd(in.d());
+      break;
+    case 3:
+      glIndexub(in.u8());
+      break;
     default: {
       const GLshort v = static_cast<GLshort>(in.i());
       glIndexsv(&v);
@@ -764,10 +1005,18 @@ void op_fragment_misc(Harness& h, Input& in) {
   }
   case 20: {
     switch (in.u8() % 6) {
-    case 0: glSecondaryColor3f(in.f(), in.f(), in.f()); break;
-    case 1: glSecondaryColor3ub(in.u8(), in.u8(), in.u8()); break;
-    case 2: glSecondaryColor3d(in.d(), in.d(), in.d()); break;
-    case 3: glSecondaryColor3i(in.i(), in.i(), in.i()); break;
+    case 0:
+      glSecondaryColor3f(in.f(), in.f(), in.f());
+      break;
+    case 1:
+      glSecondaryColor3ub(in.u8(), in.u8(), in.u8());
+      break;
+    case 2:
+      glSecondaryColor3d(in.d(), in.d(), in.d());
+      break;
+    case 3:
+      glSecondaryColor3i(in.i(), in.i(), in.i());
+      break;
     case 4: {
       const GLushort v[3] = {in.u16(), in.u16(), in.u16()};
       glSecondaryColor3usv(v);
@@ -789,8 +1038,12 @@ void op_fragment_misc(Harness& h, Input& in) {
     glSecondaryColorPointer(size, type, stride, array_pointer(h, in));
     break;
   }
-  case 22: glFlush(); break;
-  default: glFinish(); break;
+  case 22:
+    glFlush();
+    break;
+  default:
+    glFinish();
+    break;
   }
 }
 
@@ -798,18 +1051,35 @@ void op_attrib2(Harness&, Input& in) {
   switch (in.u8() % 4) {
   case 0: {
     // Mostly single groups and ALL_ATTRIB_BITS, sometimes any mask.
-    static constexpr GLbitfield kMasks[] = {
-        GL_CURRENT_BIT,  GL_POINT_BIT,     GL_LINE_BIT,    GL_POLYGON_BIT,
-        GL_POLYGON_STIPPLE_BIT, GL_PIXEL_MODE_BIT, GL_LIGHTING_BIT, GL_FOG_BIT,
-        GL_DEPTH_BUFFER_BIT, GL_ACCUM_BUFFER_BIT, GL_STENCIL_BUFFER_BIT, GL_VIEWPORT_BIT,
-        GL_TRANSFORM_BIT, GL_ENABLE_BIT,   GL_COLOR_BUFFER_BIT, GL_HINT_BIT,
-        GL_EVAL_BIT,     GL_LIST_BIT,      GL_TEXTURE_BIT, GL_SCISSOR_BIT,
-        GL_MULTISAMPLE_BIT, GL_ALL_ATTRIB_BITS};
+    static constexpr GLbitfield kMasks[] = {GL_CURRENT_BIT,
+                                            GL_POINT_BIT,
+                                            GL_LINE_BIT,
+                                            GL_POLYGON_BIT,
+                                            GL_POLYGON_STIPPLE_BIT,
+                                            GL_PIXEL_MODE_BIT,
+                                            GL_LIGHTING_BIT,
+                                            GL_FOG_BIT,
+                                            GL_DEPTH_BUFFER_BIT,
+                                            GL_ACCUM_BUFFER_BIT,
+                                            GL_STENCIL_BUFFER_BIT,
+                                            GL_VIEWPORT_BIT,
+                                            GL_TRANSFORM_BIT,
+                                            GL_ENABLE_BIT,
+                                            GL_COLOR_BUFFER_BIT,
+                                            GL_HINT_BIT,
+                                            GL_EVAL_BIT,
+                                            GL_LIST_BIT,
+                                            GL_TEXTURE_BIT,
+                                            GL_SCISSOR_BIT,
+                                            GL_MULTISAMPLE_BIT,
+                                            GL_ALL_ATTRIB_BITS};
     const uint8_t v = in.u8();
     glPushAttrib(v < 220 ? kMasks[v % 22] : in.u32());
     break;
   }
-  case 1: glPopAttrib(); break;
+  case 1:
+    glPopAttrib();
+    break;
   case 2: {
     const uint8_t v = in.u8();
     glPushClientAttrib(v < 200 ? (v % 3 == 0   ? GL_CLIENT_PIXEL_STORE_BIT
@@ -818,7 +1088,9 @@ void op_attrib2(Harness&, Input& in) {
                                : in.u32());
     break;
   }
-  default: glPopClientAttrib(); break;
+  default:
+    glPopClientAttrib();
+    break;
   }
 }
 
@@ -833,17 +1105,22 @@ void op_queries2(Harness& h, Input& in) {
   case 1: {
     const GLsizei n = name_count(in);
     Block names(h, n > 0 ? n * 4 : 0);
-    for (GLsizei k = 0; k < n; ++k) names.as<GLuint>()[k] = name(in);
+    for (GLsizei k = 0; k < n; ++k)
+      names.as<GLuint>()[k] = name(in);
     glDeleteQueries(n, names.as<GLuint>());
     break;
   }
-  case 2: glIsQuery(name(in)); break;
+  case 2:
+    glIsQuery(name(in));
+    break;
   case 3: {
     const GLenum t = in.e(kQueryTargets);
     glBeginQuery(t, name(in));
     break;
   }
-  case 4: glEndQuery(in.e(kQueryTargets)); break;
+  case 4:
+    glEndQuery(in.e(kQueryTargets));
+    break;
   case 5: {
     GLint* v = static_cast<GLint*>(std::malloc(4));
     const GLenum t = in.e(kQueryTargets);
@@ -870,12 +1147,21 @@ void op_queries2(Harness& h, Input& in) {
 
 void op_raster_pos(Harness&, Input& in) {
   switch (in.u8() % 14) {
-  case 0: glRasterPos2f(in.f(), in.f()); break;
-  case 1: glRasterPos3d(in.d(), in.d(), in.d()); break;
-  case 2: glRasterPos4f(in.f(), in.f(), in.f(), in.f()); break;
-  case 3: glRasterPos2i(in.i(), in.i()); break;
-  case 4: glRasterPos3s(static_cast<GLshort>(in.i()), static_cast<GLshort>(in.i()),
-                        static_cast<GLshort>(in.i()));
+  case 0:
+    glRasterPos2f(in.f(), in.f());
+    break;
+  case 1:
+    glRasterPos3d(in.d(), in.d(), in.d());
+    break;
+  case 2:
+    glRasterPos4f(in.f(), in.f(), in.f(), in.f());
+    break;
+  case 3:
+    glRasterPos2i(in.i(), in.i());
+    break;
+  case 4:
+    glRasterPos3s(static_cast<GLshort>(in.i()), static_cast<GLshort>(in.i()),
+                  static_cast<GLshort>(in.i()));
     break;
   case 5: {
     const GLdouble v[4] = {in.d(), in.d(), in.d(), in.d()};
@@ -887,11 +1173,18 @@ void op_raster_pos(Harness&, Input& in) {
     glRasterPos3iv(v);
     break;
   }
-  case 7: glWindowPos2f(in.f(), in.f()); break;
-  case 8: glWindowPos3d(in.d(), in.d(), in.d()); break;
-  case 9: glWindowPos2i(in.i(), in.i()); break;
-  case 10: glWindowPos3s(static_cast<GLshort>(in.i()), static_cast<GLshort>(in.i()),
-                         static_cast<GLshort>(in.i()));
+  case 7:
+    glWindowPos2f(in.f(), in.f());
+    break;
+  case 8:
+    glWindowPos3d(in.d(), in.d(), in.d());
+    break;
+  case 9:
+    glWindowPos2i(in.i(), in.i());
+    break;
+  case 10:
+    glWindowPos3s(static_cast<GLshort>(in.i()), static_cast<GLshort>(in.i()),
+                  static_cast<GLshort>(in.i()));
     break;
   case 11: {
     const GLfloat v[3] = {in.f(), in.f(), in.f()};

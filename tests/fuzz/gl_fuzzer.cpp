@@ -30,7 +30,8 @@ Harness::~Harness() {
   check_gaps();
   std::free(color);
   std::free(client);
-  for (void* p : keep) std::free(p);
+  for (void* p : keep)
+    std::free(p);
 }
 
 // Bytes between rows that no pixel occupies must keep the pattern written at allocation.
@@ -140,11 +141,13 @@ int64_t array_limit(const Harness& h, const Arr& a) {
 // itself, GL 1.5 §2.9). Reads Pineda's own array state so that PushClientAttrib and
 // InterleavedArrays are followed exactly; texture coordinate arrays of every unit count.
 int64_t client_limit(const Harness& h) {
-  // Inside Begin/End every draw command fails and queries return nothing.
-  if (inside_begin()) return INT64_MAX;
+  // Inside Begin/End queries return nothing, but a COMPILE_AND_EXECUTE list still compiles
+  // draws (reading the arrays): the limit taken before the primitive holds until End.
+  if (inside_begin()) return h.begin_limit;
   int64_t limit = INT64_MAX;
   constexpr size_t kTexArray = sizeof(kArrays) / sizeof(kArrays[0]) - 1;
-  for (size_t k = 0; k < kTexArray; ++k) limit = std::min(limit, array_limit(h, kArrays[k]));
+  for (size_t k = 0; k < kTexArray; ++k)
+    limit = std::min(limit, array_limit(h, kArrays[k]));
   const GLint active = get_int(GL_CLIENT_ACTIVE_TEXTURE);
   for (int u = 0; u < h.tex_coords; ++u) {
     glClientActiveTexture(GL_TEXTURE0 + u);
@@ -167,13 +170,25 @@ namespace {
 
 void op_vertex(Input& in) {
   switch (in.u8() % 10) {
-  case 0: glVertex2f(in.f(), in.f()); break;
-  case 1: glVertex3f(in.f(), in.f(), in.f()); break;
-  case 2: glVertex4f(in.f(), in.f(), in.f(), in.f()); break;
-  case 3: glVertex3d(in.d(), in.d(), in.d()); break;
-  case 4: glVertex2i(in.i(), in.i()); break;
-  case 5: glVertex4s(static_cast<GLshort>(in.i()), static_cast<GLshort>(in.i()),
-                     static_cast<GLshort>(in.i()), static_cast<GLshort>(in.i())); break;
+  case 0:
+    glVertex2f(in.f(), in.f());
+    break;
+  case 1:
+    glVertex3f(in.f(), in.f(), in.f());
+    break;
+  case 2:
+    glVertex4f(in.f(), in.f(), in.f(), in.f());
+    break;
+  case 3:
+    glVertex3d(in.d(), in.d(), in.d());
+    break;
+  case 4:
+    glVertex2i(in.i(), in.i());
+    break;
+  case 5:
+    glVertex4s(static_cast<GLshort>(in.i()), static_cast<GLshort>(in.i()),
+               static_cast<GLshort>(in.i()), static_cast<GLshort>(in.i()));
+    break;
   case 6: {
     const GLfloat v[3] = {in.f(), in.f(), in.f()};
     glVertex3fv(v);
@@ -189,27 +204,55 @@ void op_vertex(Input& in) {
     glVertex3iv(v);
     break;
   }
-  default: glVertex2d(in.d(), in.d()); break;
+  default:
+    glVertex2d(in.d(), in.d());
+    break;
   }
 }
 
 void op_attrib(Input& in) {
   switch (in.u8() % 14) {
-  case 0: glColor3f(in.f(), in.f(), in.f()); break;
-  case 1: glColor4f(in.f(), in.f(), in.f(), in.f()); break;
-  case 2: glColor4ub(in.u8(), in.u8(), in.u8(), in.u8()); break;
-  case 3: glColor3d(in.d(), in.d(), in.d()); break;
-  case 4: glColor4i(in.i(), in.i(), in.i(), in.i()); break;
-  case 5: glColor4us(in.u16(), in.u16(), in.u16(), in.u16()); break;
-  case 6: glColor3b(static_cast<GLbyte>(in.u8()), static_cast<GLbyte>(in.u8()),
-                    static_cast<GLbyte>(in.u8())); break;
-  case 7: glNormal3f(in.f(), in.f(), in.f()); break;
-  case 8: glNormal3b(static_cast<GLbyte>(in.u8()), static_cast<GLbyte>(in.u8()),
-                     static_cast<GLbyte>(in.u8())); break;
-  case 9: glTexCoord1f(in.f()); break;
-  case 10: glTexCoord2f(in.f(), in.f()); break;
-  case 11: glTexCoord4d(in.d(), in.d(), in.d(), in.d()); break;
-  case 12: glEdgeFlag(in.u8() & 1); break;
+  case 0:
+    glColor3f(in.f(), in.f(), in.f());
+    break;
+  case 1:
+    glColor4f(in.f(), in.f(), in.f(), in.f());
+    break;
+  case 2:
+    glColor4ub(in.u8(), in.u8(), in.u8(), in.u8());
+    break;
+  case 3:
+    glColor3d(in.d(), in.d(), in.d());
+    break;
+  case 4:
+    glColor4i(in.i(), in.i(), in.i(), in.i());
+    break;
+  case 5:
+    glColor4us(in.u16(), in.u16(), in.u16(), in.u16());
+    break;
+  case 6:
+    glColor3b(static_cast<GLbyte>(in.u8()), static_cast<GLbyte>(in.u8()),
+              static_cast<GLbyte>(in.u8()));
+    break;
+  case 7:
+    glNormal3f(in.f(), in.f(), in.f());
+    break;
+  case 8:
+    glNormal3b(static_cast<GLbyte>(in.u8()), static_cast<GLbyte>(in.u8()),
+               static_cast<GLbyte>(in.u8()));
+    break;
+  case 9:
+    glTexCoord1f(in.f());
+    break;
+  case 10:
+    glTexCoord2f(in.f(), in.f());
+    break;
+  case 11:
+    glTexCoord4d(in.d(), in.d(), in.d(), in.d());
+    break;
+  case 12:
+    glEdgeFlag(in.u8() & 1);
+    break;
   default: {
     const GLuint v[4] = {in.u32(), in.u32(), in.u32(), in.u32()};
     glColor4uiv(v);
@@ -220,9 +263,15 @@ void op_attrib(Input& in) {
 
 void op_rect(Input& in) {
   switch (in.u8() % 4) {
-  case 0: glRectf(in.f(), in.f(), in.f(), in.f()); break;
-  case 1: glRecti(in.i(), in.i(), in.i(), in.i()); break;
-  case 2: glRectd(in.d(), in.d(), in.d(), in.d()); break;
+  case 0:
+    glRectf(in.f(), in.f(), in.f(), in.f());
+    break;
+  case 1:
+    glRecti(in.i(), in.i(), in.i(), in.i());
+    break;
+  case 2:
+    glRectd(in.d(), in.d(), in.d(), in.d());
+    break;
   default: {
     const GLshort a[2] = {static_cast<GLshort>(in.i()), static_cast<GLshort>(in.i())};
     const GLshort b[2] = {static_cast<GLshort>(in.i()), static_cast<GLshort>(in.i())};
@@ -234,30 +283,51 @@ void op_rect(Input& in) {
 
 void op_matrix(Input& in) {
   switch (in.u8() % 12) {
-  case 0: glMatrixMode(in.e()); break;
-  case 1: glLoadIdentity(); break;
+  case 0:
+    glMatrixMode(in.e());
+    break;
+  case 1:
+    glLoadIdentity();
+    break;
   case 2: {
     GLfloat m[16];
-    for (float& v : m) v = in.f();
+    for (float& v : m)
+      v = in.f();
     glLoadMatrixf(m);
     break;
   }
   case 3: {
     GLdouble m[16];
-    for (double& v : m) v = in.d();
+    for (double& v : m)
+      v = in.d();
     glMultTransposeMatrixd(m);
     break;
   }
-  case 4: glRotatef(in.f(), in.f(), in.f(), in.f()); break;
-  case 5: glTranslated(in.d(), in.d(), in.d()); break;
-  case 6: glScalef(in.f(), in.f(), in.f()); break;
-  case 7: glFrustum(in.d(), in.d(), in.d(), in.d(), in.d(), in.d()); break;
-  case 8: glOrtho(in.d(), in.d(), in.d(), in.d(), in.d(), in.d()); break;
-  case 9: glPushMatrix(); break;
-  case 10: glPopMatrix(); break;
+  case 4:
+    glRotatef(in.f(), in.f(), in.f(), in.f());
+    break;
+  case 5:
+    glTranslated(in.d(), in.d(), in.d());
+    break;
+  case 6:
+    glScalef(in.f(), in.f(), in.f());
+    break;
+  case 7:
+    glFrustum(in.d(), in.d(), in.d(), in.d(), in.d(), in.d());
+    break;
+  case 8:
+    glOrtho(in.d(), in.d(), in.d(), in.d(), in.d(), in.d());
+    break;
+  case 9:
+    glPushMatrix();
+    break;
+  case 10:
+    glPopMatrix();
+    break;
   default: {
     GLfloat m[16];
-    for (float& v : m) v = in.f();
+    for (float& v : m)
+      v = in.f();
     glMultMatrixf(m);
     break;
   }
@@ -266,10 +336,18 @@ void op_matrix(Input& in) {
 
 void op_state(Input& in) {
   switch (in.u8() % 24) {
-  case 0: glEnable(in.e()); break;
-  case 1: glDisable(in.e()); break;
-  case 2: glViewport(in.i(), in.i(), in.i(), in.i()); break;
-  case 3: glDepthRange(in.d(), in.d()); break;
+  case 0:
+    glEnable(in.e());
+    break;
+  case 1:
+    glDisable(in.e());
+    break;
+  case 2:
+    glViewport(in.i(), in.i(), in.i(), in.i());
+    break;
+  case 3:
+    glDepthRange(in.d(), in.d());
+    break;
   case 4: {
     const GLdouble eq[4] = {in.d(), in.d(), in.d(), in.d()};
     glClipPlane(in.e(), eq);
@@ -280,24 +358,60 @@ void op_state(Input& in) {
     glGetClipPlane(in.e(), eq);
     break;
   }
-  case 6: glFrontFace(in.e()); break;
-  case 7: glCullFace(in.e()); break;
-  case 8: glPolygonMode(in.e(), in.e()); break;
-  case 9: glShadeModel(in.e()); break;
-  case 10: glDepthFunc(in.e()); break;
-  case 11: glDepthMask(in.u8() & 1); break;
-  case 12: glClearDepth(in.d()); break;
-  case 13: glBlendFunc(in.e(), in.e()); break;
-  case 14: glBlendFuncSeparate(in.e(), in.e(), in.e(), in.e()); break;
-  case 15: glBlendEquation(in.e()); break;
-  case 16: glBlendColor(in.f(), in.f(), in.f(), in.f()); break;
-  case 17: glClear(in.u32()); break;
-  case 18: glClearColor(in.f(), in.f(), in.f(), in.f()); break;
-  case 19: glClearStencil(in.i()); break;
-  case 20: glColorMask(in.u8() & 1, in.u8() & 1, in.u8() & 1, in.u8() & 1); break;
-  case 21: glPixelStorei(in.e(), in.i()); break;
-  case 22: glPixelStoref(in.e(), in.f()); break;
-  default: glHint(in.e(), in.e()); break;
+  case 6:
+    glFrontFace(in.e());
+    break;
+  case 7:
+    glCullFace(in.e());
+    break;
+  case 8:
+    glPolygonMode(in.e(), in.e());
+    break;
+  case 9:
+    glShadeModel(in.e());
+    break;
+  case 10:
+    glDepthFunc(in.e());
+    break;
+  case 11:
+    glDepthMask(in.u8() & 1);
+    break;
+  case 12:
+    glClearDepth(in.d());
+    break;
+  case 13:
+    glBlendFunc(in.e(), in.e());
+    break;
+  case 14:
+    glBlendFuncSeparate(in.e(), in.e(), in.e(), in.e());
+    break;
+  case 15:
+    glBlendEquation(in.e());
+    break;
+  case 16:
+    glBlendColor(in.f(), in.f(), in.f(), in.f());
+    break;
+  case 17:
+    glClear(in.u32());
+    break;
+  case 18:
+    glClearColor(in.f(), in.f(), in.f(), in.f());
+    break;
+  case 19:
+    glClearStencil(in.i());
+    break;
+  case 20:
+    glColorMask(in.u8() & 1, in.u8() & 1, in.u8() & 1, in.u8() & 1);
+    break;
+  case 21:
+    glPixelStorei(in.e(), in.i());
+    break;
+  case 22:
+    glPixelStoref(in.e(), in.f());
+    break;
+  default:
+    glHint(in.e(), in.e());
+    break;
   }
 }
 
@@ -328,13 +442,17 @@ void op_query(Input& in) {
     if (s != nullptr && std::strlen(reinterpret_cast<const char*>(s)) > 100000) std::abort();
     break;
   }
-  case 5: glIsEnabled(in.e()); break;
+  case 5:
+    glIsEnabled(in.e());
+    break;
   case 6: {
     void* p = nullptr;
     glGetPointerv(in.e(), &p);
     break;
   }
-  default: glGetError(); break;
+  default:
+    glGetError();
+    break;
   }
 }
 
@@ -372,16 +490,24 @@ void op_arrays(Harness& h, Input& in) {
     glEdgeFlagPointer(stride, array_pointer(h, in));
     break;
   }
-  case 5: glEnableClientState(in.e()); break;
-  case 6: glDisableClientState(in.e()); break;
+  case 5:
+    glEnableClientState(in.e());
+    break;
+  case 6:
+    glDisableClientState(in.e());
+    break;
   case 7: {
     const GLenum fmt = in.e();
     const GLsizei stride = in.i();
     glInterleavedArrays(fmt, stride, array_pointer(h, in));
     break;
   }
-  case 8: glPushClientAttrib(in.u32()); break;
-  default: glPopClientAttrib(); break;
+  case 8:
+    glPushClientAttrib(in.u32());
+    break;
+  default:
+    glPopClientAttrib();
+    break;
   }
 }
 
@@ -395,7 +521,8 @@ void op_fill_client(Harness& h, Input& in) {
       std::memcpy(h.client + off + 4 * k, &v, 4);
     }
   } else {
-    for (size_t k = 0; k < n && off + k < kClientBytes; ++k) h.client[off + k] = in.u8();
+    for (size_t k = 0; k < n && off + k < kClientBytes; ++k)
+      h.client[off + k] = in.u8();
   }
 }
 
@@ -408,9 +535,14 @@ int64_t max_client_index(const Harness& h, const void* p, int64_t count, GLenum 
   int64_t mx = 0;
   for (int64_t k = 0; k < count; ++k) {
     uint32_t v = 0;
-    if (tb == 1) v = u[k];
-    else if (tb == 2) { uint16_t s; std::memcpy(&s, u + 2 * k, 2); v = s; }
-    else std::memcpy(&v, u + 4 * k, 4);
+    if (tb == 1)
+      v = u[k];
+    else if (tb == 2) {
+      uint16_t s;
+      std::memcpy(&s, u + 2 * k, 2);
+      v = s;
+    } else
+      std::memcpy(&v, u + 4 * k, 4);
     if (v > mx) mx = v;
   }
   return mx;
@@ -476,8 +608,10 @@ void op_draw(Harness& h, Input& in) {
     const void* idx = index_pointer(h, in);
     const GLuint start = in.u32(), end = in.u32();
     if (!elements_ok(h, count, type, idx)) return;
-    if (kind == 1) glDrawElements(mode, count, type, idx);
-    else glDrawRangeElements(mode, start, end, count, type, idx);
+    if (kind == 1)
+      glDrawElements(mode, count, type, idx);
+    else
+      glDrawRangeElements(mode, start, end, count, type, idx);
     break;
   }
   case 3: {
@@ -509,7 +643,7 @@ void op_draw(Harness& h, Input& in) {
   }
   default: {
     const GLint i = in.i();
-    if (i >= 0 && i > (inside_begin() ? h.begin_limit : client_limit(h))) return;
+    if (i >= 0 && i > client_limit(h)) return;
     glArrayElement(i);
     break;
   }
@@ -529,15 +663,20 @@ void op_buffers(Harness& h, Input& in) {
     glDeleteBuffers(1 + (in.u8() & 1), names);
     break;
   }
-  case 2: glBindBuffer(in.e(), in.u8() % 8u); break;
-  case 3: glIsBuffer(in.u8() % 8u); break;
+  case 2:
+    glBindBuffer(in.e(), in.u8() % 8u);
+    break;
+  case 3:
+    glIsBuffer(in.u8() % 8u);
+    break;
   case 4: {
     const GLenum target = in.e();
     const int64_t size = in.i();
     const GLenum usage = in.e();
     if (size > kMaxBufferBytes) return;
     // Data from harness memory when it holds that much, otherwise an uninitialized store.
-    const void* data = (size > 0 && size <= static_cast<int64_t>(kClientBytes)) ? h.client : nullptr;
+    const void* data =
+        (size > 0 && size <= static_cast<int64_t>(kClientBytes)) ? h.client : nullptr;
     glBufferData(target, static_cast<GLsizeiptr>(size), data, usage);
     break;
   }
@@ -546,7 +685,8 @@ void op_buffers(Harness& h, Input& in) {
     const GLintptr off = in.i();
     const int64_t size = in.i();
     // Source bytes only where harness memory backs them; larger sizes get null (no read).
-    const void* data = (size > 0 && size <= static_cast<int64_t>(kClientBytes)) ? h.client : nullptr;
+    const void* data =
+        (size > 0 && size <= static_cast<int64_t>(kClientBytes)) ? h.client : nullptr;
     glBufferSubData(target, off, static_cast<GLsizeiptr>(size), data);
     break;
   }
@@ -572,7 +712,9 @@ void op_buffers(Harness& h, Input& in) {
     if (p != nullptr && size > 0) std::memset(p, in.u8(), static_cast<size_t>(size));
     break;
   }
-  case 8: glUnmapBuffer(in.e()); break;
+  case 8:
+    glUnmapBuffer(in.e());
+    break;
   default: {
     GLint v = 0;
     void* p = nullptr;
@@ -598,7 +740,9 @@ void op_osmesa(Harness& h, Input& in) {
     OSMesaPixelStore(OSMESA_ROW_LENGTH, v);
     break;
   }
-  case 2: OSMesaPixelStore(OSMESA_Y_UP, in.u8() & 1); break;
+  case 2:
+    OSMesaPixelStore(OSMESA_Y_UP, in.u8() & 1);
+    break;
   case 3: {
     GLint v = 0;
     OSMesaGetIntegerv(in.e(), &v);
@@ -611,7 +755,9 @@ void op_osmesa(Harness& h, Input& in) {
     OSMesaGetDepthBuffer(h.ctx, &w, &hh, &fmt, &p);
     break;
   }
-  default: h.create(in); break;
+  default:
+    h.create(in);
+    break;
   }
 }
 
@@ -636,41 +782,91 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
     switch (op) {
     case 0: {
       const GLenum mode = in.e();
-      if (!inside_begin()) h.begin_limit = client_limit(h);
+      before_begin(h);
       glBegin(mode);
       break;
     }
-    case 1: glEnd(); break;
+    case 1:
+      glEnd();
+      break;
     case 2:
-    case 3: op_vertex(in); break;
-    case 4: op_attrib(in); break;
-    case 5: op_rect(in); break;
-    case 6: op_matrix(in); break;
+    case 3:
+      op_vertex(in);
+      break;
+    case 4:
+      op_attrib(in);
+      break;
+    case 5:
+      op_rect(in);
+      break;
+    case 6:
+      op_matrix(in);
+      break;
     case 7:
-    case 8: op_state(in); break;
-    case 9: op_query(in); break;
-    case 10: op_read_pixels(h, in); break;
-    case 11: op_arrays(h, in); break;
-    case 12: op_fill_client(h, in); break;
-    case 13: op_draw(h, in); break;
-    case 14: op_buffers(h, in); break;
-    case 15: op_osmesa(h, in); break;
+    case 8:
+      op_state(in);
+      break;
+    case 9:
+      op_query(in);
+      break;
+    case 10:
+      op_read_pixels(h, in);
+      break;
+    case 11:
+      op_arrays(h, in);
+      break;
+    case 12:
+      op_fill_client(h, in);
+      break;
+    case 13:
+      op_draw(h, in);
+      break;
+    case 14:
+      op_buffers(h, in);
+      break;
+    case 15:
+      op_osmesa(h, in);
+      break;
     case 16:
-    case 17: op_pixels(h, in); break;
+    case 17:
+      op_pixels(h, in);
+      break;
     case 18:
-    case 19: op_texture_image(h, in); break;
+    case 19:
+      op_texture_image(h, in);
+      break;
     case 20:
-    case 21: op_texture_state(h, in); break;
+    case 21:
+      op_texture_state(h, in);
+      break;
     case 22:
-    case 23: op_lists(h, in); break;
-    case 24: op_select_feedback(h, in); break;
-    case 25: op_eval(h, in); break;
-    case 26: op_lighting(h, in); break;
-    case 27: op_fragment_misc(h, in); break;
-    case 28: op_attrib2(h, in); break;
-    case 29: op_queries2(h, in); break;
-    case 30: op_raster_pos(h, in); break;
-    default: op_query(in); break;
+    case 23:
+      op_lists(h, in);
+      break;
+    case 24:
+      op_select_feedback(h, in);
+      break;
+    case 25:
+      op_eval(h, in);
+      break;
+    case 26:
+      op_lighting(h, in);
+      break;
+    case 27:
+      op_fragment_misc(h, in);
+      break;
+    case 28:
+      op_attrib2(h, in);
+      break;
+    case 29:
+      op_queries2(h, in);
+      break;
+    case 30:
+      op_raster_pos(h, in);
+      break;
+    default:
+      op_query(in);
+      break;
     }
   }
   return 0;

@@ -37,3 +37,84 @@ TEST_F(FuzzRegressionTest, TexGenVectorInvalidPnameReadsNothingPastOneValue) {
 }
 
 } // namespace
+
+namespace {
+
+// glLightModelf(LIGHT_MODEL_COLOR_CONTROL, 1e30) converted the float to GLenum before checking
+// it (undefined behaviour, UBSan float-cast-overflow); now INVALID_ENUM and no change.
+TEST_F(FuzzRegressionTest, LightModelColorControlHugeFloatIsInvalidEnum) {
+  for (const float v : {1e30f, -1.0f, -1e30f, 0.5f}) {
+    glLightModelf(GL_LIGHT_MODEL_COLOR_CONTROL, v);
+    EXPECT_EQ(glGetError(), static_cast<GLenum>(GL_INVALID_ENUM)) << v;
+  }
+  const GLfloat nan_value = __builtin_nanf("");
+  glLightModelfv(GL_LIGHT_MODEL_COLOR_CONTROL, &nan_value);
+  EXPECT_EQ(glGetError(), static_cast<GLenum>(GL_INVALID_ENUM));
+  GLint mode = 0;
+  glGetIntegerv(GL_LIGHT_MODEL_COLOR_CONTROL, &mode);
+  EXPECT_EQ(mode, GL_SINGLE_COLOR);
+  glLightModelf(GL_LIGHT_MODEL_COLOR_CONTROL, static_cast<float>(GL_SEPARATE_SPECULAR_COLOR));
+  EXPECT_EQ(glGetError(), static_cast<GLenum>(GL_NO_ERROR));
+  glGetIntegerv(GL_LIGHT_MODEL_COLOR_CONTROL, &mode);
+  EXPECT_EQ(mode, GL_SEPARATE_SPECULAR_COLOR);
+}
+
+} // namespace
+
+namespace {
+
+// Compiling a 1D or 2D image command copied the client image as if UNPACK_SKIP_IMAGES and
+// UNPACK_IMAGE_HEIGHT applied to it, reading far past the image (GL 2.1 §3.8.1: they apply to
+// 3D images only).
+TEST_F(FuzzRegressionTest, CompiledSubImageIgnoresSkipImages) {
+  GLuint tex = 0;
+  glGenTextures(1, &tex);
+  glBindTexture(GL_TEXTURE_1D, tex);
+  glTexImage1D(GL_TEXTURE_1D, 0, GL_RGBA, 4, 0, GL_RGBA, GL_UNSIGNED_BYTE, nullptr);
+  glPixelStorei(GL_UNPACK_SKIP_IMAGES, 3);
+  glPixelStorei(GL_UNPACK_IMAGE_HEIGHT, 7);
+  // Exactly the 4 RGBA bytes of a 1 x 1 image (alignment 4).
+  auto texel = std::make_unique<GLubyte[]>(4);
+  for (int k = 0; k < 4; ++k)
+    texel[k] = static_cast<GLubyte>(0x40 * k + 0x10);
+  const GLuint list = glGenLists(1);
+  glNewList(list, GL_COMPILE);
+  glTexSubImage1D(GL_TEXTURE_1D, 0, 1, 1, GL_RGBA, GL_UNSIGNED_BYTE, texel.get());
+  glDrawPixels(1, 1, GL_RGBA, GL_UNSIGNED_BYTE, texel.get());
+  glEndList();
+  texel.reset();
+  glCallList(list);
+  EXPECT_EQ(glGetError(), static_cast<GLenum>(GL_NO_ERROR));
+  GLubyte back[16] = {};
+  glGetTexImage(GL_TEXTURE_1D, 0, GL_RGBA, GL_UNSIGNED_BYTE, back);
+  EXPECT_EQ(back[4], 0x10);
+  EXPECT_EQ(back[7], 0xD0);
+  glDeleteLists(list, 1);
+  glDeleteTextures(1, &tex);
+}
+
+// Compiling TexParameterfv, TexGenfv and the other vector commands copied as many values as
+// any command takes for the pname (four for TEXTURE_ENV_COLOR even in TexParameterfv, where it
+// is invalid), reading past a one-value array.
+TEST_F(FuzzRegressionTest, CompiledVectorCommandsReadOnlyTheirOwnCounts) {
+  auto one = std::make_unique<GLfloat[]>(1);
+  auto one_i = std::make_unique<GLint[]>(1);
+  one[0] = 1.0f;
+  one_i[0] = 1;
+  const GLuint list = glGenLists(1);
+  glNewList(list, GL_COMPILE);
+  glTexParameterfv(GL_TEXTURE_2D, GL_TEXTURE_ENV_COLOR, one.get());
+  glTexParameteriv(GL_TEXTURE_2D, GL_FOG_COLOR, one_i.get());
+  glTexEnvfv(GL_TEXTURE_ENV, GL_TEXTURE_BORDER_COLOR, one.get());
+  glTexGenfv(GL_S, GL_FOG_COLOR, one.get());
+  glFogfv(GL_TEXTURE_BORDER_COLOR, one.get());
+  glPointParameterfv(GL_EYE_PLANE, one.get());
+  glEndList();
+  EXPECT_EQ(glGetError(), static_cast<GLenum>(GL_NO_ERROR));
+  // Each is an invalid pname for its command: the errors come when the list executes.
+  glCallList(list);
+  EXPECT_EQ(glGetError(), static_cast<GLenum>(GL_INVALID_ENUM));
+  glDeleteLists(list, 1);
+}
+
+} // namespace
