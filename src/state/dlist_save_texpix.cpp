@@ -111,7 +111,10 @@ void replay_pixel_map(const void* p) {
 template <typename T, void(GLAPIENTRY* Fn)(GLenum, GLsizei, const T*)>
 bool save_pixel_map(GLenum map, GLsizei mapsize, const T* values) {
   if (compiling_list() == nullptr) return true;
-  const GLsizei copied = values == nullptr ? 0 : std::clamp<GLsizei>(mapsize, 0, kMaxCopiedValues);
+  // A size beyond MAX_PIXEL_MAP_TABLE is an error when the list executes (§3.6.3), so the
+  // values are not read: the array may well be shorter than the size.
+  const GLsizei copied =
+      values == nullptr || mapsize > kMaxPixelMapTable ? 0 : std::max<GLsizei>(mapsize, 0);
   const PixelMapHeader h{map, mapsize, copied};
   return record_with_data(&replay_pixel_map<T, Fn>, &h, sizeof h, values,
                           static_cast<size_t>(copied) * sizeof(T));

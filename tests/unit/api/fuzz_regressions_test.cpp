@@ -118,3 +118,26 @@ TEST_F(FuzzRegressionTest, CompiledVectorCommandsReadOnlyTheirOwnCounts) {
 }
 
 } // namespace
+
+namespace {
+
+// Compiling glPixelMap* with a size beyond MAX_PIXEL_MAP_TABLE copied that many values (up to
+// 65536) from a shorter array; the size is an error at execution, so nothing is read.
+TEST_F(FuzzRegressionTest, CompiledPixelMapTooLargeReadsNothing) {
+  auto one = std::make_unique<GLuint[]>(1);
+  one[0] = 7;
+  const GLuint list = glGenLists(1);
+  glNewList(list, GL_COMPILE);
+  glPixelMapuiv(GL_PIXEL_MAP_I_TO_I, 32768, one.get());
+  glPixelMapfv(GL_PIXEL_MAP_R_TO_R, 257, reinterpret_cast<const GLfloat*>(one.get()));
+  glEndList();
+  EXPECT_EQ(glGetError(), static_cast<GLenum>(GL_NO_ERROR));
+  glCallList(list);
+  EXPECT_EQ(glGetError(), static_cast<GLenum>(GL_INVALID_VALUE));
+  GLint size = 0;
+  glGetIntegerv(GL_PIXEL_MAP_I_TO_I_SIZE, &size);
+  EXPECT_EQ(size, 1);
+  glDeleteLists(list, 1);
+}
+
+} // namespace
