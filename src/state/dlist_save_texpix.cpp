@@ -89,7 +89,7 @@ bool save_vec(void (*replay)(const void*), int (*count)(GLenum), GLenum a, GLenu
 
 // ---- arrays of values ---------------------------------------------------------------------
 
-// Larger than any pixel map or texture-name array a valid call can pass; a larger count is
+// Larger than any texture-name array a valid call can pass; a larger count is
 // an error of the command, generated when the list executes.
 constexpr GLsizei kMaxCopiedValues = 1 << 16;
 
