@@ -104,7 +104,9 @@ void replay_pixel_map(const void* p) {
   PixelMapHeader h;
   std::memcpy(&h, p, sizeof h);
   std::vector<T> values(static_cast<size_t>(h.copied));
-  std::memcpy(values.data(), static_cast<const char*>(p) + sizeof h, values.size() * sizeof(T));
+  // memcpy of nothing still needs valid pointers, which an empty vector has not.
+  if (!values.empty())
+    std::memcpy(values.data(), static_cast<const char*>(p) + sizeof h, values.size() * sizeof(T));
   Fn(h.map, h.mapsize, h.copied > 0 ? values.data() : nullptr);
 }
 
@@ -132,8 +134,10 @@ void replay_prioritize(const void* p) {
   std::vector<GLuint> names(n);
   std::vector<GLfloat> priorities(n);
   const char* data = static_cast<const char*>(p) + sizeof h;
-  std::memcpy(names.data(), data, n * sizeof(GLuint));
-  std::memcpy(priorities.data(), data + n * sizeof(GLuint), n * sizeof(GLfloat));
+  if (n != 0) {
+    std::memcpy(names.data(), data, n * sizeof(GLuint));
+    std::memcpy(priorities.data(), data + n * sizeof(GLuint), n * sizeof(GLfloat));
+  }
   exec::PrioritizeTextures(h.n, names.data(), priorities.data());
 }
 

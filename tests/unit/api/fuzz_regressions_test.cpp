@@ -141,3 +141,23 @@ TEST_F(FuzzRegressionTest, CompiledPixelMapTooLargeReadsNothing) {
 }
 
 } // namespace
+
+namespace {
+
+// Executing a compiled PixelMap or PrioritizeTextures with no values copied them with memcpy
+// to an empty vector's null pointer (UBSan: null passed as nonnull argument).
+TEST_F(FuzzRegressionTest, CompiledEmptyValueArraysReplayWithoutNullMemcpy) {
+  const GLfloat value = 0.5f;
+  const GLuint name = 1;
+  const GLuint list = glGenLists(1);
+  glNewList(list, GL_COMPILE);
+  glPixelMapfv(GL_PIXEL_MAP_R_TO_R, 0, &value);
+  glPrioritizeTextures(0, &name, &value);
+  glEndList();
+  glCallList(list);
+  EXPECT_EQ(glGetError(), static_cast<GLenum>(GL_INVALID_VALUE));
+  EXPECT_EQ(glGetError(), static_cast<GLenum>(GL_NO_ERROR));
+  glDeleteLists(list, 1);
+}
+
+} // namespace
