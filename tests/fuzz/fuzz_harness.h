@@ -79,6 +79,12 @@ inline GLint get_int(GLenum pname) {
   return v[0];
 }
 
+// GL_FUZZER_TRACE=1: print each operation (and image extents) to read a crash input.
+inline bool tracing() {
+  static const bool on = std::getenv("GL_FUZZER_TRACE") != nullptr;
+  return on;
+}
+
 // True between a successful glBegin and glEnd, which a display list may also contain: every
 // query then fails without writing its result.
 inline bool inside_begin() {

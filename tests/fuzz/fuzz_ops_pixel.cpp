@@ -260,20 +260,19 @@ int64_t image_bytes(int64_t w, int64_t h, int64_t d, GLenum format, GLenum type,
   const int64_t a = st.alignment;
   if (a <= 0) return 0;
   const int64_t l = st.row_length > 0 ? st.row_length : w;
-  if (type == GL_BITMAP) {
-    // §3.6.4: one bit per element, k = a * ceil(n l / 8a) bytes per row; SKIP_PIXELS skips
-    // bits of each row.
-    const int64_t k = a * ((n * l + 8 * a - 1) / (8 * a));
-    return (st.skip_rows + h - 1) * k + (st.skip_pixels * n + w * n + 7) / 8;
-  }
-  // k in elements: n l when s >= a, else a/s * ceil(s n l / a) (eq. 3.13).
-  const int64_t k = s >= a ? n * l : (a / s) * ((s * n * l + a - 1) / a);
-  const int64_t row = k * s;
+  // Row stride in bytes: for BITMAP (one bit per element) k = a * ceil(n l / 8a) (§3.6.4);
+  // otherwise k elements of s bytes, k = n l when s >= a, else a/s * ceil(s n l / a) (eq.
+  // 3.13). Images of a 3D image follow every IMAGE_HEIGHT (or h) rows (§3.8.1).
+  const bool bitmap = type == GL_BITMAP;
+  const int64_t row = bitmap ? a * ((n * l + 8 * a - 1) / (8 * a))
+                             : (s >= a ? n * l : (a / s) * ((s * n * l + a - 1) / a)) * s;
   int64_t images = 0;
   if (three_d) {
     const int64_t rows_per_image = st.image_height > 0 ? st.image_height : h;
     images = (st.skip_images + d - 1) * rows_per_image * row;
   }
+  // The last row: SKIP_PIXELS skips bits of each row for BITMAP.
+  if (bitmap) return images + (st.skip_rows + h - 1) * row + (st.skip_pixels * n + w * n + 7) / 8;
   return images + (st.skip_rows + h - 1) * row + (st.skip_pixels + w) * n * s;
 }
 
@@ -403,6 +402,17 @@ void op_tex_image(Harness& h, Input& in, int dims, bool sub) {
   const GLenum format = in.e(kPixelFormats), type = in.e(kPixelTypes);
   const uint8_t how = in.u8();
   const int64_t need = image_bytes(w, hgt, d, format, type, store_of(h, false), dims == 3);
+  if (tracing()) {
+    const Store st = store_of(h, false);
+    std::fprintf(stderr,
+                 "  tex image %dD%s %dx%dx%d format 0x%x type 0x%x row %lld skip %lld/%lld/%lld "
+                 "align %lld height %lld: %lld bytes\n",
+                 dims, sub ? " sub" : "", w, hgt, d, format, type,
+                 static_cast<long long>(st.row_length), static_cast<long long>(st.skip_pixels),
+                 static_cast<long long>(st.skip_rows), static_cast<long long>(st.skip_images),
+                 static_cast<long long>(st.alignment), static_cast<long long>(st.image_height),
+                 static_cast<long long>(need));
+  }
   // TexImage with a null pointer is legal (the image is left undefined); TexSubImage without
   // data is not, so a subimage the harness cannot back is skipped.
   const bool null_data = need > kMaxImageBytes || (!sub && (how & 15) == 0);
