@@ -133,6 +133,36 @@ private:
   uint8_t* p_;
 };
 
+// Values of a `count`-value vector argument, exact size, from the input.
+struct Floats {
+  Floats(const Harness& h, Input& in, int64_t count) : b(h, count * 4) {
+    for (int64_t k = 0; k < count; ++k)
+      b.as<GLfloat>()[k] = in.f();
+  }
+  GLfloat* get() { return b.as<GLfloat>(); }
+  Block b;
+};
+struct Ints {
+  Ints(const Harness& h, Input& in, int64_t count) : b(h, count * 4) {
+    for (int64_t k = 0; k < count; ++k)
+      b.as<GLint>()[k] = in.i();
+  }
+  GLint* get() { return b.as<GLint>(); }
+  Block b;
+};
+
+// A count of names (Gen*/Delete*/Prioritize...): small, sometimes negative.
+inline GLsizei name_count(Input& in) {
+  const uint8_t v = in.u8();
+  return v >= 250 ? -static_cast<GLsizei>(v - 249) : v % 9;
+}
+
+// A list/texture/query name: small most of the time, sometimes any 32-bit value.
+inline GLuint name(Input& in) {
+  const uint8_t v = in.u8();
+  return v < 240 ? v % 12 : in.u32();
+}
+
 // The largest element index every enabled client-memory array can supply (gl_fuzzer.cpp).
 int64_t client_limit(const Harness& h);
 // The pixel-store state of one direction, read back from the GL (fuzz_ops_pixel.cpp).
@@ -161,5 +191,7 @@ void op_fragment_misc(Harness& h, Input& in);
 void op_attrib2(Harness& h, Input& in);
 void op_queries2(Harness& h, Input& in);
 void op_raster_pos(Harness& h, Input& in);
+void op_vertex_variants(Harness& h, Input& in);
+void op_other_variants(Harness& h, Input& in);
 
 } // namespace pineda::fuzz

@@ -790,8 +790,10 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
       glEnd();
       break;
     case 2:
-    case 3:
       op_vertex(in);
+      break;
+    case 3:
+      op_vertex_variants(h, in);
       break;
     case 4:
       op_attrib(in);
@@ -865,7 +867,7 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
       op_raster_pos(h, in);
       break;
     default:
-      op_query(in);
+      op_other_variants(h, in);
       break;
     }
   }
