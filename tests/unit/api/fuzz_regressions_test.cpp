@@ -161,3 +161,28 @@ TEST_F(FuzzRegressionTest, CompiledEmptyValueArraysReplayWithoutNullMemcpy) {
 }
 
 } // namespace
+
+namespace {
+
+// Compiling glLightfv/glMaterialfv/glLightModelfv copied as many values as any of the three
+// takes for the pname (three for COLOR_INDEXES even in Lightfv, where it is invalid), reading
+// past a one-value array.
+TEST_F(FuzzRegressionTest, CompiledLightingVectorsReadOnlyTheirOwnCounts) {
+  auto one = std::make_unique<GLfloat[]>(1);
+  auto one_i = std::make_unique<GLint[]>(1);
+  one[0] = 1.0f;
+  one_i[0] = 1;
+  const GLuint list = glGenLists(1);
+  glNewList(list, GL_COMPILE);
+  glLightfv(GL_LIGHT0, GL_COLOR_INDEXES, one.get());
+  glLightiv(GL_LIGHT0, GL_EMISSION, one_i.get());
+  glMaterialfv(GL_FRONT, GL_POSITION, one.get());
+  glLightModelfv(GL_AMBIENT, one.get());
+  glEndList();
+  EXPECT_EQ(glGetError(), static_cast<GLenum>(GL_NO_ERROR));
+  glCallList(list);
+  EXPECT_EQ(glGetError(), static_cast<GLenum>(GL_INVALID_ENUM));
+  glDeleteLists(list, 1);
+}
+
+} // namespace
