@@ -655,21 +655,22 @@ void GLAPIENTRY Lightfv(GLenum light, GLenum pname, const GLfloat* params) {
 
 void GLAPIENTRY Lightiv(GLenum light, GLenum pname, const GLint* params) {
   Context* ctx = compiling_list();
-  if (ctx == nullptr || record_params(&replay_params<GLint, &exec::Lightiv>, &light_count, light, pname, params))
+  if (ctx == nullptr ||
+      record_params(&replay_params<GLint, &exec::Lightiv>, &light_count, light, pname, params))
     exec::Lightiv(light, pname, params);
 }
 
 void GLAPIENTRY LightModelfv(GLenum pname, const GLfloat* params) {
   Context* ctx = compiling_list();
-  if (ctx == nullptr ||
-      record_params(&replay_model_params<GLfloat, &exec::LightModelfv>, &light_model_count, 0, pname, params))
+  if (ctx == nullptr || record_params(&replay_model_params<GLfloat, &exec::LightModelfv>,
+                                      &light_model_count, 0, pname, params))
     exec::LightModelfv(pname, params);
 }
 
 void GLAPIENTRY LightModeliv(GLenum pname, const GLint* params) {
   Context* ctx = compiling_list();
-  if (ctx == nullptr ||
-      record_params(&replay_model_params<GLint, &exec::LightModeliv>, &light_model_count, 0, pname, params))
+  if (ctx == nullptr || record_params(&replay_model_params<GLint, &exec::LightModeliv>,
+                                      &light_model_count, 0, pname, params))
     exec::LightModeliv(pname, params);
 }
 
@@ -677,8 +678,8 @@ void GLAPIENTRY LightModeliv(GLenum pname, const GLint* params) {
 // block's fast form (the block then executes call by call, with the Material in its place).
 void GLAPIENTRY Materialfv(GLenum face, GLenum pname, const GLfloat* params) {
   Context* ctx = compiling_list();
-  if (ctx == nullptr ||
-      record_params(&replay_params<GLfloat, &exec::Materialfv>, &material_count, face, pname, params))
+  if (ctx == nullptr || record_params(&replay_params<GLfloat, &exec::Materialfv>, &material_count,
+                                      face, pname, params))
     exec::Materialfv(face, pname, params);
 }
 
