@@ -2,7 +2,8 @@
 # Builds the libFuzzer harness (tests/fuzz) with clang, ASan and UBSan in build-fuzz/ and fuzzes
 # for the given number of seconds (default 600), starting from the seed corpus. New inputs go to
 # build-fuzz/corpus (the checked-in seeds stay untouched); crashes are written to
-# build-fuzz/artifacts/ and make the script fail. Replay one with:
+# build-fuzz/artifacts/ and make the script fail (TIMEOUT=<s> raises the per-input limit of 10 s
+# on a loaded machine). Replay one with:
 #   build-fuzz/tests/fuzz/gl_fuzzer build-fuzz/artifacts/crash-...
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -18,5 +19,5 @@ mkdir -p "$BUILD/corpus" "$BUILD/artifacts"
 export ASAN_OPTIONS=${ASAN_OPTIONS:-abort_on_error=1:detect_leaks=1}
 export UBSAN_OPTIONS=${UBSAN_OPTIONS:-print_stacktrace=1:halt_on_error=1}
 "$BUILD/tests/fuzz/gl_fuzzer" "$BUILD/corpus" tests/fuzz/corpus \
-  -max_total_time="$SECONDS_TO_RUN" -max_len=4096 -timeout=10 -rss_limit_mb=4096 \
+  -max_total_time="$SECONDS_TO_RUN" -max_len=4096 -timeout="${TIMEOUT:-10}" -rss_limit_mb=4096 \
   -artifact_prefix="$BUILD/artifacts/" -print_final_stats=1

@@ -207,27 +207,48 @@ GLenum elements_error(Context* ctx, GLenum mode, GLsizei count, GLenum type) {
 
 // ---- parameters of computed size --------------------------------------------------------
 
-// GL 2.1 Tables 2.10 and 2.11 (and LightModel): values per parameter; 0 for names that are
-// no parameter, which the command reports when the list executes without reading any.
-int param_count(GLenum pname) {
+// Values each command's parameter vector holds for `pname` (GL 2.1 §2.14.2 Table 2.10):
+// per command, so that a pname another command takes more values for (COLOR_INDEXES given to
+// Lightfv) does not read past the array; 0 for a pname the command does not take.
+int light_count(GLenum pname) {
   switch (pname) {
   case GL_AMBIENT:
   case GL_DIFFUSE:
   case GL_SPECULAR:
   case GL_POSITION:
-  case GL_EMISSION:
-  case GL_AMBIENT_AND_DIFFUSE:
-  case GL_LIGHT_MODEL_AMBIENT:
     return 4;
   case GL_SPOT_DIRECTION:
-  case GL_COLOR_INDEXES:
     return 3;
   case GL_SPOT_EXPONENT:
   case GL_SPOT_CUTOFF:
   case GL_CONSTANT_ATTENUATION:
   case GL_LINEAR_ATTENUATION:
   case GL_QUADRATIC_ATTENUATION:
+    return 1;
+  default:
+    return 0;
+  }
+}
+int material_count(GLenum pname) {
+  switch (pname) {
+  case GL_AMBIENT:
+  case GL_DIFFUSE:
+  case GL_SPECULAR:
+  case GL_EMISSION:
+  case GL_AMBIENT_AND_DIFFUSE:
+    return 4;
+  case GL_COLOR_INDEXES:
+    return 3;
   case GL_SHININESS:
+    return 1;
+  default:
+    return 0;
+  }
+}
+int light_model_count(GLenum pname) {
+  switch (pname) {
+  case GL_LIGHT_MODEL_AMBIENT:
+    return 4;
   case GL_LIGHT_MODEL_LOCAL_VIEWER:
   case GL_LIGHT_MODEL_TWO_SIDE:
   case GL_LIGHT_MODEL_COLOR_CONTROL:
@@ -260,10 +281,11 @@ void replay_model_params(const void* p) {
 // A null pointer makes the command do nothing (as pineda::exec treats it), so nothing is
 // compiled.
 template <typename T>
-bool record_params(ReplayFn fn, GLenum target, GLenum pname, const T* params) {
+bool record_params(ReplayFn fn, int (*count)(GLenum), GLenum target, GLenum pname,
+                   const T* params) {
   if (params == nullptr) return false;
   ParamArgs<T> a{target, pname, {}};
-  std::copy(params, params + param_count(pname), a.v);
+  std::copy(params, params + count(pname), a.v);
   return dlist_record(fn, &a, sizeof a);
 }
 
@@ -632,27 +654,28 @@ void GLAPIENTRY MultiDrawElements(GLenum mode, const GLsizei* count, GLenum type
 void GLAPIENTRY Lightfv(GLenum light, GLenum pname, const GLfloat* params) {
   Context* ctx = compiling_list();
   if (ctx == nullptr ||
-      record_params(&replay_params<GLfloat, &exec::Lightfv>, light, pname, params))
+      record_params(&replay_params<GLfloat, &exec::Lightfv>, &light_count, light, pname, params))
     exec::Lightfv(light, pname, params);
 }
 
 void GLAPIENTRY Lightiv(GLenum light, GLenum pname, const GLint* params) {
   Context* ctx = compiling_list();
-  if (ctx == nullptr || record_params(&replay_params<GLint, &exec::Lightiv>, light, pname, params))
+  if (ctx == nullptr ||
+      record_params(&replay_params<GLint, &exec::Lightiv>, &light_count, light, pname, params))
     exec::Lightiv(light, pname, params);
 }
 
 void GLAPIENTRY LightModelfv(GLenum pname, const GLfloat* params) {
   Context* ctx = compiling_list();
-  if (ctx == nullptr ||
-      record_params(&replay_model_params<GLfloat, &exec::LightModelfv>, 0, pname, params))
+  if (ctx == nullptr || record_params(&replay_model_params<GLfloat, &exec::LightModelfv>,
+                                      &light_model_count, 0, pname, params))
     exec::LightModelfv(pname, params);
 }
 
 void GLAPIENTRY LightModeliv(GLenum pname, const GLint* params) {
   Context* ctx = compiling_list();
-  if (ctx == nullptr ||
-      record_params(&replay_model_params<GLint, &exec::LightModeliv>, 0, pname, params))
+  if (ctx == nullptr || record_params(&replay_model_params<GLint, &exec::LightModeliv>,
+                                      &light_model_count, 0, pname, params))
     exec::LightModeliv(pname, params);
 }
 
@@ -660,15 +683,15 @@ void GLAPIENTRY LightModeliv(GLenum pname, const GLint* params) {
 // block's fast form (the block then executes call by call, with the Material in its place).
 void GLAPIENTRY Materialfv(GLenum face, GLenum pname, const GLfloat* params) {
   Context* ctx = compiling_list();
-  if (ctx == nullptr ||
-      record_params(&replay_params<GLfloat, &exec::Materialfv>, face, pname, params))
+  if (ctx == nullptr || record_params(&replay_params<GLfloat, &exec::Materialfv>, &material_count,
+                                      face, pname, params))
     exec::Materialfv(face, pname, params);
 }
 
 void GLAPIENTRY Materialiv(GLenum face, GLenum pname, const GLint* params) {
   Context* ctx = compiling_list();
   if (ctx == nullptr ||
-      record_params(&replay_params<GLint, &exec::Materialiv>, face, pname, params))
+      record_params(&replay_params<GLint, &exec::Materialiv>, &material_count, face, pname, params))
     exec::Materialiv(face, pname, params);
 }
 

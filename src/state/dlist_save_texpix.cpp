@@ -42,20 +42,25 @@ template <typename T> struct Vec4Args {
   T v[4];
 };
 
-// Number of values a parameter vector holds (GL 2.1 §3.8.13, §2.11.4, §3.10, §3.8.4, §3.3).
-int vec_count(GLenum pname) {
-  switch (pname) {
-  case GL_TEXTURE_ENV_COLOR:
-  case GL_OBJECT_PLANE:
-  case GL_EYE_PLANE:
-  case GL_FOG_COLOR:
-  case GL_TEXTURE_BORDER_COLOR:
-    return 4;
-  case GL_POINT_DISTANCE_ATTENUATION:
-    return 3;
-  default:
-    return 1;
-  }
+// Number of values each command's parameter vector holds for `pname` (GL 2.1 §3.8.13,
+// §2.11.4, §3.8.4, §3.10, §3.3): a vector is read only as far as its command reads it, so that
+// a pname another command takes four values for (TEXTURE_ENV_COLOR given to TexParameterfv)
+// does not read past a one-value array.
+int env_count(GLenum pname) {
+  return pname == GL_TEXTURE_ENV_COLOR ? 4 : 1;
+}
+int gen_count(GLenum pname) {
+  if (pname == GL_OBJECT_PLANE || pname == GL_EYE_PLANE) return 4;
+  return pname == GL_TEXTURE_GEN_MODE ? 1 : 0;
+}
+int tex_param_count(GLenum pname) {
+  return pname == GL_TEXTURE_BORDER_COLOR ? 4 : 1;
+}
+int fog_count(GLenum pname) {
+  return pname == GL_FOG_COLOR ? 4 : 1;
+}
+int point_count(GLenum pname) {
+  return pname == GL_POINT_DISTANCE_ATTENUATION ? 3 : 1;
 }
 
 template <typename T, void(GLAPIENTRY* Fn)(GLenum, GLenum, const T*)> void replay2(const void* p) {
@@ -73,17 +78,18 @@ template <typename T, void(GLAPIENTRY* Fn)(GLenum, const T*)> void replay1(const
 // Compiles a (a, pname, params) command; returns whether it must also execute now. A null
 // pointer compiles nothing (the command then does nothing, as pineda::exec treats it).
 template <typename T>
-bool save_vec(void (*replay)(const void*), GLenum a, GLenum pname, const T* params) {
+bool save_vec(void (*replay)(const void*), int (*count)(GLenum), GLenum a, GLenum pname,
+              const T* params) {
   if (compiling_list() == nullptr) return true;
   if (params == nullptr) return false;
   Vec4Args<T> args{a, pname, {}};
-  std::copy(params, params + vec_count(pname), args.v);
+  std::copy(params, params + count(pname), args.v);
   return dlist_record(replay, &args, sizeof args);
 }
 
 // ---- arrays of values ---------------------------------------------------------------------
 
-// Larger than any pixel map or texture-name array a valid call can pass; a larger count is
+// Larger than any texture-name array a valid call can pass; a larger count is
 // an error of the command, generated when the list executes.
 constexpr GLsizei kMaxCopiedValues = 1 << 16;
 
@@ -98,14 +104,19 @@ void replay_pixel_map(const void* p) {
   PixelMapHeader h;
   std::memcpy(&h, p, sizeof h);
   std::vector<T> values(static_cast<size_t>(h.copied));
-  std::memcpy(values.data(), static_cast<const char*>(p) + sizeof h, values.size() * sizeof(T));
+  // memcpy of nothing still needs valid pointers, which an empty vector has not.
+  if (!values.empty())
+    std::memcpy(values.data(), static_cast<const char*>(p) + sizeof h, values.size() * sizeof(T));
   Fn(h.map, h.mapsize, h.copied > 0 ? values.data() : nullptr);
 }
 
 template <typename T, void(GLAPIENTRY* Fn)(GLenum, GLsizei, const T*)>
 bool save_pixel_map(GLenum map, GLsizei mapsize, const T* values) {
   if (compiling_list() == nullptr) return true;
-  const GLsizei copied = values == nullptr ? 0 : std::clamp<GLsizei>(mapsize, 0, kMaxCopiedValues);
+  // A size beyond MAX_PIXEL_MAP_TABLE is an error when the list executes (§3.6.3), so the
+  // values are not read: the array may well be shorter than the size.
+  const GLsizei copied =
+      values == nullptr || mapsize > kMaxPixelMapTable ? 0 : std::max<GLsizei>(mapsize, 0);
   const PixelMapHeader h{map, mapsize, copied};
   return record_with_data(&replay_pixel_map<T, Fn>, &h, sizeof h, values,
                           static_cast<size_t>(copied) * sizeof(T));
@@ -123,8 +134,10 @@ void replay_prioritize(const void* p) {
   std::vector<GLuint> names(n);
   std::vector<GLfloat> priorities(n);
   const char* data = static_cast<const char*>(p) + sizeof h;
-  std::memcpy(names.data(), data, n * sizeof(GLuint));
-  std::memcpy(priorities.data(), data + n * sizeof(GLuint), n * sizeof(GLfloat));
+  if (n != 0) {
+    std::memcpy(names.data(), data, n * sizeof(GLuint));
+    std::memcpy(priorities.data(), data + n * sizeof(GLuint), n * sizeof(GLfloat));
+  }
   exec::PrioritizeTextures(h.n, names.data(), priorities.data());
 }
 
@@ -159,12 +172,13 @@ template <ImageCall Call> void replay_image(const void* p) {
 
 // Compiles an image command whose client image spans client_image_bytes(w, h, d, format,
 // type) under the current unpack state; returns whether it must also execute now.
-template <ImageCall Call> bool save_image(ImageHeader h, const void* pixels) {
+template <ImageCall Call> bool save_image(ImageHeader h, const void* pixels, bool three_d = false) {
   Context* ctx = compiling_list();
   if (ctx == nullptr) return true;
-  h.unpack = ctx->unpack;
-  h.bytes =
-      pixels == nullptr ? 0 : client_image_bytes(h.w, h.h, h.d, h.format, h.type, ctx->unpack);
+  // IMAGE_HEIGHT and SKIP_IMAGES apply to 3D images only (§3.8.1): a 1D or 2D image spans
+  // no more than its rows.
+  h.unpack = three_d ? ctx->unpack : store_2d(ctx->unpack);
+  h.bytes = pixels == nullptr ? 0 : client_image_bytes(h.w, h.h, h.d, h.format, h.type, h.unpack);
   try {
     return record_with_data(&replay_image<Call>, &h, sizeof h, pixels, h.bytes);
   } catch (const std::bad_alloc&) {
@@ -207,45 +221,47 @@ void call_polygon_stipple(const ImageHeader&, const void* px) {
 namespace saver {
 
 void GLAPIENTRY TexEnvfv(GLenum target, GLenum pname, const GLfloat* params) {
-  if (save_vec(&replay2<GLfloat, &exec::TexEnvfv>, target, pname, params))
+  if (save_vec(&replay2<GLfloat, &exec::TexEnvfv>, &env_count, target, pname, params))
     exec::TexEnvfv(target, pname, params);
 }
 void GLAPIENTRY TexEnviv(GLenum target, GLenum pname, const GLint* params) {
-  if (save_vec(&replay2<GLint, &exec::TexEnviv>, target, pname, params))
+  if (save_vec(&replay2<GLint, &exec::TexEnviv>, &env_count, target, pname, params))
     exec::TexEnviv(target, pname, params);
 }
 void GLAPIENTRY TexGeniv(GLenum coord, GLenum pname, const GLint* params) {
-  if (save_vec(&replay2<GLint, &exec::TexGeniv>, coord, pname, params))
+  if (save_vec(&replay2<GLint, &exec::TexGeniv>, &gen_count, coord, pname, params))
     exec::TexGeniv(coord, pname, params);
 }
 void GLAPIENTRY TexGenfv(GLenum coord, GLenum pname, const GLfloat* params) {
-  if (save_vec(&replay2<GLfloat, &exec::TexGenfv>, coord, pname, params))
+  if (save_vec(&replay2<GLfloat, &exec::TexGenfv>, &gen_count, coord, pname, params))
     exec::TexGenfv(coord, pname, params);
 }
 void GLAPIENTRY TexGendv(GLenum coord, GLenum pname, const GLdouble* params) {
-  if (save_vec(&replay2<GLdouble, &exec::TexGendv>, coord, pname, params))
+  if (save_vec(&replay2<GLdouble, &exec::TexGendv>, &gen_count, coord, pname, params))
     exec::TexGendv(coord, pname, params);
 }
 void GLAPIENTRY TexParameterfv(GLenum target, GLenum pname, const GLfloat* params) {
-  if (save_vec(&replay2<GLfloat, &exec::TexParameterfv>, target, pname, params))
+  if (save_vec(&replay2<GLfloat, &exec::TexParameterfv>, &tex_param_count, target, pname, params))
     exec::TexParameterfv(target, pname, params);
 }
 void GLAPIENTRY TexParameteriv(GLenum target, GLenum pname, const GLint* params) {
-  if (save_vec(&replay2<GLint, &exec::TexParameteriv>, target, pname, params))
+  if (save_vec(&replay2<GLint, &exec::TexParameteriv>, &tex_param_count, target, pname, params))
     exec::TexParameteriv(target, pname, params);
 }
 void GLAPIENTRY Fogfv(GLenum pname, const GLfloat* params) {
-  if (save_vec(&replay1<GLfloat, &exec::Fogfv>, 0, pname, params)) exec::Fogfv(pname, params);
+  if (save_vec(&replay1<GLfloat, &exec::Fogfv>, &fog_count, 0, pname, params))
+    exec::Fogfv(pname, params);
 }
 void GLAPIENTRY Fogiv(GLenum pname, const GLint* params) {
-  if (save_vec(&replay1<GLint, &exec::Fogiv>, 0, pname, params)) exec::Fogiv(pname, params);
+  if (save_vec(&replay1<GLint, &exec::Fogiv>, &fog_count, 0, pname, params))
+    exec::Fogiv(pname, params);
 }
 void GLAPIENTRY PointParameterfv(GLenum pname, const GLfloat* params) {
-  if (save_vec(&replay1<GLfloat, &exec::PointParameterfv>, 0, pname, params))
+  if (save_vec(&replay1<GLfloat, &exec::PointParameterfv>, &point_count, 0, pname, params))
     exec::PointParameterfv(pname, params);
 }
 void GLAPIENTRY PointParameteriv(GLenum pname, const GLint* params) {
-  if (save_vec(&replay1<GLint, &exec::PointParameteriv>, 0, pname, params))
+  if (save_vec(&replay1<GLint, &exec::PointParameteriv>, &point_count, 0, pname, params))
     exec::PointParameteriv(pname, params);
 }
 
@@ -301,7 +317,7 @@ void GLAPIENTRY TexImage3D(GLenum target, GLint level, GLint internalformat, GLs
   ImageHeader h;
   h.target = target, h.level = level, h.internal_format = internalformat;
   h.w = width, h.h = height, h.d = depth, h.border = border, h.format = format, h.type = type;
-  if (is_proxy_texture_target(target) || save_image<&call_tex_image_3d>(h, pixels))
+  if (is_proxy_texture_target(target) || save_image<&call_tex_image_3d>(h, pixels, true))
     exec::TexImage3D(target, level, internalformat, width, height, depth, border, format, type,
                      pixels);
 }
@@ -328,7 +344,7 @@ void GLAPIENTRY TexSubImage3D(GLenum target, GLint level, GLint xoffset, GLint y
   ImageHeader h;
   h.target = target, h.level = level, h.x = xoffset, h.y = yoffset, h.z = zoffset;
   h.w = width, h.h = height, h.d = depth, h.format = format, h.type = type;
-  if (save_image<&call_tex_sub_image_3d>(h, pixels))
+  if (save_image<&call_tex_sub_image_3d>(h, pixels, true))
     exec::TexSubImage3D(target, level, xoffset, yoffset, zoffset, width, height, depth, format,
                         type, pixels);
 }

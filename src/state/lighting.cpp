@@ -229,10 +229,12 @@ void set_light_model(Context* ctx, const char* func, GLenum pname, const float* 
   case GL_LIGHT_MODEL_LOCAL_VIEWER: ls.local_viewer = v[0] != 0.0f; break;
   case GL_LIGHT_MODEL_TWO_SIDE: ls.two_side = v[0] != 0.0f; break;
   case GL_LIGHT_MODEL_COLOR_CONTROL: {
-    const auto mode = static_cast<GLenum>(v[0]);
-    if (static_cast<float>(mode) != v[0] ||
-        (mode != GL_SINGLE_COLOR && mode != GL_SEPARATE_SPECULAR_COLOR))
-      return record_error(ctx, GL_INVALID_ENUM, func, mode);
+    // Compared as floats: converting a float outside GLenum's range (or NaN) to GLenum is
+    // undefined behaviour.
+    GLenum mode = 0;
+    if (v[0] == static_cast<float>(GL_SINGLE_COLOR)) mode = GL_SINGLE_COLOR;
+    if (v[0] == static_cast<float>(GL_SEPARATE_SPECULAR_COLOR)) mode = GL_SEPARATE_SPECULAR_COLOR;
+    if (mode == 0) return record_error(ctx, GL_INVALID_ENUM, func, pname);
     ls.color_control = mode;
     break;
   }

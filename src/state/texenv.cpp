@@ -560,6 +560,13 @@ void GLAPIENTRY GetTexEnviv(GLenum target, GLenum pname, GLint* params) {
     params[i] = is_color ? color_to_int(static_cast<float>(v[i])) : float_to_int(v[i]);
 }
 
+// Values the vector forms of glTexGen read (GL 2.1 §2.11.4): four for a plane, one for the
+// mode, none for an unknown pname (INVALID_ENUM without touching the array).
+static int tex_gen_param_count(GLenum pname) {
+  if (pname == GL_OBJECT_PLANE || pname == GL_EYE_PLANE) return 4;
+  return pname == GL_TEXTURE_GEN_MODE ? 1 : 0;
+}
+
 void GLAPIENTRY TexGeni(GLenum coord, GLenum pname, GLint param) {
   const double v = param;
   tex_gen("glTexGeni", coord, pname, &v, false);
@@ -573,7 +580,7 @@ void GLAPIENTRY TexGend(GLenum coord, GLenum pname, GLdouble param) {
 }
 void GLAPIENTRY TexGeniv(GLenum coord, GLenum pname, const GLint* params) {
   if (params == nullptr) return;
-  const int n = pname == GL_TEXTURE_GEN_MODE ? 1 : 4;
+  const int n = tex_gen_param_count(pname);
   double v[4] = {};
   for (int i = 0; i < n; ++i)
     v[i] = params[i];
@@ -581,7 +588,7 @@ void GLAPIENTRY TexGeniv(GLenum coord, GLenum pname, const GLint* params) {
 }
 void GLAPIENTRY TexGenfv(GLenum coord, GLenum pname, const GLfloat* params) {
   if (params == nullptr) return;
-  const int n = pname == GL_TEXTURE_GEN_MODE ? 1 : 4;
+  const int n = tex_gen_param_count(pname);
   double v[4] = {};
   for (int i = 0; i < n; ++i)
     v[i] = params[i];
@@ -589,7 +596,7 @@ void GLAPIENTRY TexGenfv(GLenum coord, GLenum pname, const GLfloat* params) {
 }
 void GLAPIENTRY TexGendv(GLenum coord, GLenum pname, const GLdouble* params) {
   if (params == nullptr) return;
-  const int n = pname == GL_TEXTURE_GEN_MODE ? 1 : 4;
+  const int n = tex_gen_param_count(pname);
   double v[4] = {};
   for (int i = 0; i < n; ++i)
     v[i] = params[i];
