@@ -7,6 +7,7 @@
 // split decides how a smooth-shaded quad's colours are interpolated, and clipping a triangle
 // leaves its interpolation unchanged, so a quad shades the same whether or not it is clipped.
 // Every emitted triangle lists its provoking vertex (GL 2.1 §2.14.7, Table 2.12) last.
+#include <algorithm>
 #include <cstddef>
 #include <cstdint>
 
@@ -289,6 +290,79 @@ void assemble(Sink& sink, const DrawCall& dc, GLenum mode, const PVertex* verts,
     as.run(mode, DirectFetch{verts}, count);
 }
 
+// Sharing a draw among the worker threads (raster/workers.h) costs each worker the assembly
+// and setup of every primitive and the caller a wake-up and a wait, some microseconds: only
+// draws with many vertices or a large window area are shared. One triangle per Begin/End
+// (immediate mode) stays on the calling thread.
+constexpr size_t kShareVertices = 1024;
+constexpr int64_t kShareArea = 16384; // pixels of the draw's window bounding box
+
+bool worth_sharing(const RasterState& rs, const FragCtx& frag, GLenum mode, const PVertex* verts,
+                   const uint32_t* indices, size_t count) {
+  if (count >= kShareVertices) return true;
+  const RasterModes& m = rs.modes;
+  // Lines and points cover little of their bounding box unless wide or smooth.
+  float pad = 1.0f;
+  if (mode == GL_POINTS) {
+    if (!m.point_smooth && (m.point_attenuated ? m.point_size_max : m.point_size) <= 2.0f)
+      return false;
+    pad += 0.5f * (m.point_attenuated ? m.point_size_max : m.point_size) + 1.0f;
+  } else if (mode == GL_LINES || mode == GL_LINE_STRIP || mode == GL_LINE_LOOP) {
+    if (!m.line_smooth && m.line_width < 2.5f) return false;
+    pad += 0.5f * m.line_width + 1.0f;
+  }
+  // The window bounding box of the vertices; a vertex outside the clip volume (its window
+  // position is not meaningful) stands for the whole clip rectangle.
+  float x0 = 0, y0 = 0, x1 = 0, y1 = 0;
+  bool whole = false;
+  for (size_t i = 0; i < count; ++i) {
+    const PVertex& v = verts[indices != nullptr ? indices[i] : i];
+    if (v.clipmask != 0) {
+      whole = true;
+      break;
+    }
+    if (i == 0) {
+      x0 = x1 = v.win[0];
+      y0 = y1 = v.win[1];
+      continue;
+    }
+    x0 = std::min(x0, v.win[0]);
+    x1 = std::max(x1, v.win[0]);
+    y0 = std::min(y0, v.win[1]);
+    y1 = std::max(y1, v.win[1]);
+  }
+  int64_t w = int64_t{frag.clip_x1} - frag.clip_x0 + 1,
+          h = int64_t{frag.clip_y1} - frag.clip_y0 + 1;
+  if (!whole) {
+    // Inside the clip volume, window positions lie within the guard band: no overflow.
+    w = std::min<int64_t>(w, static_cast<int64_t>(x1 - x0 + 2.0f * pad));
+    h = std::min<int64_t>(h, static_cast<int64_t>(y1 - y0 + 2.0f * pad));
+  }
+  return w > 0 && h > 0 && w * h >= kShareArea;
+}
+
+// Runs the draw on `n` threads: each assembles every primitive in order (with its own
+// fragment context, stipple counter and sample count) and rasterizes its bands' rows only.
+void draw_shared(const DrawCall& dc, const FragCtx& frag, int n, GLenum mode, const PVertex* verts,
+                 const uint32_t* indices, size_t count) {
+  uint64_t samples[kMaxRasterThreads] = {};
+  auto job = [&](int i) {
+    FragCtx local = frag;
+    DrawCall share = dc;
+    share.frag = &local;
+    float stipple_counter = 0.0f;
+    share.stipple_counter = &stipple_counter;
+    share.bands = Bands{n, i};
+    RasterSink sink{share};
+    assemble(sink, share, mode, verts, indices, count);
+    samples[i] = local.samples_passed;
+  };
+  dc.workers->run(job);
+  if (dc.samples_passed != nullptr)
+    for (int i = 0; i < n; ++i)
+      *dc.samples_passed += samples[i];
+}
+
 } // namespace
 
 void draw_primitives(const DrawCall& dc, GLenum mode, const PVertex* verts, const uint32_t* indices,
@@ -296,6 +370,11 @@ void draw_primitives(const DrawCall& dc, GLenum mode, const PVertex* verts, cons
   // The fragment stage is set up once for the whole draw, not once per primitive.
   FragCtx frag;
   prepare_fragments(*dc.state, *dc.fb, frag);
+  if (dc.workers != nullptr && !frag.noop && verts != nullptr &&
+      worth_sharing(*dc.state, frag, mode, verts, indices, count)) {
+    const int n = dc.workers->threads();
+    if (n > 1) return draw_shared(dc, frag, n, mode, verts, indices, count);
+  }
   DrawCall prepared = dc;
   prepared.frag = &frag;
   float stipple_counter = 0.0f;

@@ -99,8 +99,9 @@ inline uint64_t stipple_block_mask(const uint32_t* rows, int bx, int by) {
 }
 
 // `stipple`: the polygon stipple rows, or nullptr when stippling is off (one test per block).
+// Only the block rows of `bands` are visited.
 void traverse(const TriEdges& te, const FragCtx& ctx, const FragInputs& in, BlockFn fn,
-              const uint32_t* stipple) {
+              const uint32_t* stipple, const Bands& bands) {
   constexpr int B = kBlockSize;
   // Offsets from a block's first pixel to its corner pixel where an edge function is largest
   // (reject if even that is negative) and smallest (accept if even that is non-negative).
@@ -116,6 +117,7 @@ void traverse(const TriEdges& te, const FragCtx& ctx, const FragInputs& in, Bloc
   const Edges32 e32 = make_edges32(te);
 
   for (int by = te.miny & ~(B - 1); by <= te.maxy; by += B) {
+    if (!bands.owns(by)) continue;
     int64_t lo = bx_first, hi = bx_last;
     int64_t erow[3];
     bool skip = false;
@@ -169,6 +171,8 @@ void triangle(const DrawCall& dc, const FragCtx& ctx, const PVertex& a, const PV
   const SnappedTri t = snap_triangle(a, b, c);
   TriEdges te;
   if (!setup_edges(t, ctx.clip_x0, ctx.clip_y0, ctx.clip_x1, ctx.clip_y1, te)) return;
+  // Another worker draws the whole triangle: skip its setup.
+  if (!dc.bands.owns_any(te.miny, te.maxy)) return;
   const RasterState& rs = *dc.state;
   // GL 2.1 §2.14.1: with two-sided lighting a back-facing polygon takes the back colours.
   const int slot = (rs.two_sided && back_facing) ? kAttrBackColor : kAttrColor;
@@ -186,7 +190,7 @@ void triangle(const DrawCall& dc, const FragCtx& ctx, const PVertex& a, const PV
   if (modes.offset_fill && ctx.needs_depth)
     in.z.v0 += polygon_offset_depth(modes, in.z.dx, in.z.dy, ctx.depth_max);
   traverse(te, ctx, in, ctx.fn[static_cast<int>(shade)],
-           modes.polygon_stipple ? modes.polygon_stipple_rows : nullptr);
+           modes.polygon_stipple ? modes.polygon_stipple_rows : nullptr, dc.bands);
 }
 
 } // namespace
