@@ -8,6 +8,7 @@
 // leaves its interpolation unchanged, so a quad shades the same whether or not it is clipped.
 // Every emitted triangle lists its provoking vertex (GL 2.1 §2.14.7, Table 2.12) last.
 #include <algorithm>
+#include <cmath>
 #include <cstddef>
 #include <cstdint>
 
@@ -311,33 +312,34 @@ bool worth_sharing(const RasterState& rs, const FragCtx& frag, GLenum mode, cons
     if (!m.line_smooth && m.line_width < 2.5f) return false;
     pad += 0.5f * m.line_width + 1.0f;
   }
-  // The window bounding box of the vertices; a vertex outside the clip volume (its window
-  // position is not meaningful) stands for the whole clip rectangle.
-  float x0 = 0, y0 = 0, x1 = 0, y1 = 0;
-  bool whole = false;
+  // The window bounding box of the vertices, clamped to the clip rectangle. A vertex outside
+  // the clip volume has no window position yet: its clip coordinates are projected here, and
+  // one with w <= 0 (whose primitives may reach anywhere) stands for the whole rectangle.
+  const Viewport& vp = rs.viewport;
+  const float cx0 = static_cast<float>(frag.clip_x0), cx1 = static_cast<float>(frag.clip_x1) + 1;
+  const float cy0 = static_cast<float>(frag.clip_y0), cy1 = static_cast<float>(frag.clip_y1) + 1;
+  float x0 = cx1, y0 = cy1, x1 = cx0, y1 = cy0;
   for (size_t i = 0; i < count; ++i) {
     const PVertex& v = verts[indices != nullptr ? indices[i] : i];
+    float x = v.win[0], y = v.win[1];
     if (v.clipmask != 0) {
-      whole = true;
-      break;
+      const float w = v.clip[3];
+      x = vp.x + (v.clip[0] / w + 1.0f) * 0.5f * vp.w;
+      y = vp.y + (v.clip[1] / w + 1.0f) * 0.5f * vp.h;
+      if (!(w > 0.0f) || !std::isfinite(x) || !std::isfinite(y)) {
+        x0 = cx0, y0 = cy0, x1 = cx1, y1 = cy1;
+        break;
+      }
     }
-    if (i == 0) {
-      x0 = x1 = v.win[0];
-      y0 = y1 = v.win[1];
-      continue;
-    }
-    x0 = std::min(x0, v.win[0]);
-    x1 = std::max(x1, v.win[0]);
-    y0 = std::min(y0, v.win[1]);
-    y1 = std::max(y1, v.win[1]);
+    x0 = std::min(x0, x - pad);
+    x1 = std::max(x1, x + pad);
+    y0 = std::min(y0, y - pad);
+    y1 = std::max(y1, y + pad);
   }
-  int64_t w = int64_t{frag.clip_x1} - frag.clip_x0 + 1,
-          h = int64_t{frag.clip_y1} - frag.clip_y0 + 1;
-  if (!whole) {
-    // Inside the clip volume, window positions lie within the guard band: no overflow.
-    w = std::min<int64_t>(w, static_cast<int64_t>(x1 - x0 + 2.0f * pad));
-    h = std::min<int64_t>(h, static_cast<int64_t>(y1 - y0 + 2.0f * pad));
-  }
+  x0 = std::max(x0, cx0), x1 = std::min(x1, cx1);
+  y0 = std::max(y0, cy0), y1 = std::min(y1, cy1);
+  if (!(x1 > x0 && y1 > y0)) return false;
+  const int64_t w = static_cast<int64_t>(x1 - x0), h = static_cast<int64_t>(y1 - y0);
   return w > 0 && h > 0 && w * h >= kShareArea;
 }
 

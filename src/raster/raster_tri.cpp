@@ -169,10 +169,17 @@ void triangle(const DrawCall& dc, const FragCtx& ctx, const PVertex& a, const PV
               const PVertex& c, const PVertex& provoking, bool back_facing) {
   if (ctx.noop) return;
   const SnappedTri t = snap_triangle(a, b, c);
+  if (dc.bands.count > 1) {
+    // Another worker draws the whole triangle: skip its setup. Pixel centres inside lie in
+    // the rows from floor(ymin) to floor(ymax).
+    const int32_t ymin = std::min({t.y[0], t.y[1], t.y[2]});
+    const int32_t ymax = std::max({t.y[0], t.y[1], t.y[2]});
+    if (!dc.bands.owns_any(std::max(ymin >> kSubpixelBits, ctx.clip_y0),
+                           std::min(ymax >> kSubpixelBits, ctx.clip_y1)))
+      return;
+  }
   TriEdges te;
   if (!setup_edges(t, ctx.clip_x0, ctx.clip_y0, ctx.clip_x1, ctx.clip_y1, te)) return;
-  // Another worker draws the whole triangle: skip its setup.
-  if (!dc.bands.owns_any(te.miny, te.maxy)) return;
   const RasterState& rs = *dc.state;
   // GL 2.1 §2.14.1: with two-sided lighting a back-facing polygon takes the back colours.
   const int slot = (rs.two_sided && back_facing) ? kAttrBackColor : kAttrColor;
