@@ -296,7 +296,7 @@ void assemble(Sink& sink, const DrawCall& dc, GLenum mode, const PVertex* verts,
 // draws with many vertices or a large window area are shared. One triangle per Begin/End
 // (immediate mode) stays on the calling thread.
 constexpr size_t kShareVertices = 1024;
-constexpr int64_t kShareArea = 16384; // pixels of the draw's window bounding box
+constexpr int64_t kShareArea = 32768; // pixels of the draw's window bounding box
 
 bool worth_sharing(const RasterState& rs, const FragCtx& frag, GLenum mode, const PVertex* verts,
                    const uint32_t* indices, size_t count) {
