@@ -25,7 +25,7 @@ struct Rect {
 
 // Clears of at least this many pixels are shared among the worker threads, in runs of at
 // least kShareClearRows rows.
-constexpr int64_t kShareClearArea = 256 * 1024;
+constexpr int64_t kShareClearArea = 512 * 1024;
 constexpr int kShareClearRows = 16;
 
 uint8_t to_unorm8(float c) {

@@ -19,9 +19,9 @@
 
 namespace {
 
-// Large enough for the clears to be shared (at least 256K pixels); odd sizes so the last band
+// Large enough for the clears to be shared (at least 512K pixels); odd sizes so the last band
 // and the last block column are partial.
-constexpr int kW = 651, kH = 421;
+constexpr int kW = 931, kH = 601;
 
 using BeginQueryFn = void(GLAPIENTRY*)(GLenum, GLuint);
 using EndQueryFn = void(GLAPIENTRY*)(GLenum);
