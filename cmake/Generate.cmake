@@ -25,6 +25,8 @@ get_filename_component(PINEDA_SOURCE_ROOT ${CMAKE_CURRENT_LIST_DIR}/.. ABSOLUTE)
 set(PINEDA_GENERATED_DIR ${CMAKE_BINARY_DIR}/generated)
 set(PINEDA_GENERATOR ${PINEDA_SOURCE_ROOT}/tools/gen/gen_gl.py)
 set(PINEDA_ENTRY_POINTS ${PINEDA_SOURCE_ROOT}/src/api/entry_points.txt)
+# The extensions GL_EXTENSIONS lists; their aliases are exported from the same list.
+set(PINEDA_EXTENSIONS ${PINEDA_SOURCE_ROOT}/src/api/extensions.txt)
 # How each command behaves while a display list is compiled (GL 2.1 §5.4).
 set(PINEDA_DLIST_IMMEDIATE ${PINEDA_SOURCE_ROOT}/src/api/dlist_immediate.txt)
 set(PINEDA_DLIST_SAVERS ${PINEDA_SOURCE_ROOT}/src/api/dlist_savers.txt)
@@ -49,15 +51,16 @@ set(PINEDA_GENERATE_STAMP ${PINEDA_GENERATED_DIR}/generate.stamp)
 add_custom_command(
   OUTPUT ${PINEDA_GENERATE_STAMP}
   BYPRODUCTS ${PINEDA_GENERATED_SOURCES} ${PINEDA_GENERATED_HEADERS}
-    ${PINEDA_GENERATED_DIR}/dispatch.h ${PINEDA_EXPORTS_MAP}
+    ${PINEDA_GENERATED_DIR}/dispatch.h ${PINEDA_GENERATED_DIR}/extensions.h ${PINEDA_EXPORTS_MAP}
   COMMAND ${Python3_EXECUTABLE} ${PINEDA_GENERATOR}
     --registry ${PINEDA_GL_XML}
     --entry-points ${PINEDA_ENTRY_POINTS}
+    --extensions ${PINEDA_EXTENSIONS}
     --dlist-immediate ${PINEDA_DLIST_IMMEDIATE}
     --dlist-savers ${PINEDA_DLIST_SAVERS}
     --out-dir ${PINEDA_GENERATED_DIR}
     --stamp ${PINEDA_GENERATE_STAMP}
-  DEPENDS ${PINEDA_GENERATOR} ${PINEDA_ENTRY_POINTS} ${PINEDA_DLIST_IMMEDIATE}
+  DEPENDS ${PINEDA_GENERATOR} ${PINEDA_ENTRY_POINTS} ${PINEDA_EXTENSIONS} ${PINEDA_DLIST_IMMEDIATE}
     ${PINEDA_DLIST_SAVERS} ${PINEDA_GL_XML}
   COMMENT "Generating the GL API layer from ${PINEDA_GL_XML}"
   VERBATIM)

@@ -20,6 +20,8 @@ while [ $# -gt 0 ]; do
     *) echo "bench.sh: unknown argument '$1' (see --help)" >&2; exit 2 ;;
   esac
 done
+# The runner also holds the sweep_ and scale_ scenes of scripts/sweep.sh and scripts/scaling.sh.
+[[ " ${extra[*]} " == *" --filter "* ]] || extra+=(--filter bench_)
 mkdir -p bench-out
 "$BUILD/conformance/pineda_conformance" --runner "$BUILD/conformance/pineda_bench_runner" \
   --out bench-out --rounds "$rounds" --reps "$reps" --timeout 600 --csv bench-out/bench.csv \

@@ -9,6 +9,7 @@ PACKAGES=(
   libglm-dev             # matrix math outside the hot loops
   libgtest-dev libgmock-dev googletest
   libbenchmark-dev
+  valgrind bc            # scripts/bench_instructions.sh: instruction counts per bench scene
   libosmesa6-dev         # Mesa's OSMesa: the conformance oracle (never linked into Pineda)
   libpng-dev zlib1g-dev  # conformance images
   libx11-dev libxext-dev # GLX over Xlib, presenting with MIT-SHM (XShm)
@@ -16,6 +17,7 @@ PACKAGES=(
   libglfw3-dev           # GLX tests: an unmodified GLFW program; the demos (demos/)
   freeglut3-dev          # tests/programs: a freeglut program on Pineda
   piglit                 # scripts/piglit.sh: the external GL 1.x test list (not in the test run)
+  python3-matplotlib     # scripts/sweep.sh, scaling.sh: charts (run with /usr/bin/python3)
 )
 
 missing=()

@@ -174,6 +174,7 @@ typedef union __GLXEvent {
 XVisualInfo *glXChooseVisual(Display *dpy, int screen, int *attribList);
 GLXContext glXCreateContext(Display *dpy, XVisualInfo *vis, GLXContext shareList, Bool direct);
 void glXDestroyContext(Display *dpy, GLXContext ctx);
+void glXCopyContext(Display *dpy, GLXContext src, GLXContext dst, unsigned long mask);
 Bool glXMakeCurrent(Display *dpy, GLXDrawable drawable, GLXContext ctx);
 void glXSwapBuffers(Display *dpy, GLXDrawable drawable);
 GLXPixmap glXCreateGLXPixmap(Display *dpy, XVisualInfo *visual, Pixmap pixmap);
@@ -186,6 +187,7 @@ GLXContext glXGetCurrentContext(void);
 GLXDrawable glXGetCurrentDrawable(void);
 void glXWaitGL(void);
 void glXWaitX(void);
+void glXUseXFont(Font font, int first, int count, int listBase);
 const char *glXQueryExtensionsString(Display *dpy, int screen);
 const char *glXQueryServerString(Display *dpy, int screen, int name);
 const char *glXGetClientString(Display *dpy, int name);

@@ -6,6 +6,7 @@
 
 #include "core/api_util.h"
 #include "dispatch.h"
+#include "geometry/draw_cache.h"
 
 namespace pineda {
 

@@ -63,6 +63,7 @@ struct ClientArray {
   GLsizei stride = 0;          // as given; 0 means tightly packed
   const void* pointer = nullptr;
   GLuint buffer = 0;           // GL_ARRAY_BUFFER_BINDING captured at glXxxPointer time
+  GLsizei count_ext = 0;       // EXT_vertex_array's count (src/state/ext_commands.cpp)
 };
 
 struct VertexArrays {
@@ -110,16 +111,26 @@ struct ClientAttribFrame {
 };
 
 // The vertex the immediate-mode and array paths collect: object position plus a snapshot of
-// the current attributes (GL 2.1 §2.7).
+// the current attributes (GL 2.1 §2.7). The attributes every draw reads fill the first 64
+// bytes (one cache line); the texture coordinates, read only by units that are on, follow.
 struct InputVertex {
+  // Deliberately leaves the members uninitialized, also where a container value-initializes
+  // (imm.emplace_back()): every path that makes a vertex fills what its draw reads, and
+  // zeroing 128 bytes per glVertex call is measurable.
+  InputVertex() {} // NOLINT(modernize-use-equals-default): = default would zero them
   float pos[4];
   float color[4];
   float normal[3];
-  float tex[kMaxTexUnits][4]; // per texture unit
   float color2[3]; // secondary colour (GL 1.4, §2.7)
   float fog;       // fog coordinate (GL 1.4, §2.7)
   uint32_t edge;
+  float tex[kMaxTexUnits][4]; // per texture unit
 };
+
+// Which texture units' coordinates a draw's geometry stage reads from its InputVertex array
+// (bit u for unit u); the paths that build InputVertex arrays for one draw copy only those.
+// Display lists and glArrayElement keep every unit (kAllTexUnits).
+constexpr uint32_t kAllTexUnits = (1u << kMaxTexUnits) - 1;
 
 // The colour buffers of GL 2.1 table 4.4 (no auxiliary buffers exist: GL_AUX_BUFFERS is 0).
 enum ColorBufferBit : uint32_t {
@@ -214,6 +225,8 @@ struct AttribFrame {
   EvalAttrib eval; // eval and the evaluator enables (src/state/eval.cpp)
 };
 
+struct DrawCache;
+
 struct Context {
   Context();
   // A context in the share group that owns `objects`.
@@ -241,6 +254,9 @@ struct Context {
   // ---- Begin/End (GL 2.1 §2.6) ----
   GLenum begin_mode = kOutsideBeginEnd;
   std::vector<InputVertex> imm;
+  // Texture units whose current coordinates the vertices of this Begin/End copy (set by
+  // glBegin from the validated state, which cannot change before glEnd).
+  uint32_t imm_tex_units = kAllTexUnits;
 
   // ---- current values (GL 2.1 §2.7, Table 6.5) ----
   float cur_color[4] = {1, 1, 1, 1};
@@ -357,6 +373,10 @@ struct Context {
   // ---- derived state (validate.cpp) ----
   uint32_t dirty = kDirtyAll;
   RasterState raster;
+  uint64_t raster_serial = 0; // advanced by every change of `raster`
+  // The per-draw setup kept across draws (geometry/draw_cache.h, transform.cpp); made at the
+  // first draw.
+  std::unique_ptr<DrawCache> draw_cache;
   glm::mat4 mvp{1.0f};         // projection * modelview
   bool modelview_identity = true;
   bool need_eye = false;       // eye coordinates needed (user clip planes)

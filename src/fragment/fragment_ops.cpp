@@ -12,6 +12,7 @@
 // chosen only when one of them is on, with a per-row branch for each.
 #include "fragment/fragment_ops.h"
 
+#include "fragment/blend_simd.h"
 #include "fragment/shade.h"
 #include "fragment/simd.h"
 
@@ -68,15 +69,10 @@ template <ColorFormat F> u32x4 pack4(i32x4 r, i32x4 g, i32x4 b, i32x4 a) {
          reinterpret_cast<u32x4>(a) << byte_shift(L::a);
 }
 
-inline f32x4 channel_f(u32x4 px, int off) {
-  return __builtin_convertvector(reinterpret_cast<i32x4>((px >> byte_shift(off)) & 0xffu), f32x4);
-}
-
 // Clamp to [0,1] and round to 8 bits (GL 2.1 §2.14.9); NaN from a degenerate 1/w gives 0.
 inline i32x4 to_unorm8(f32x4 v) {
   const f32x4 zero = {}, one = zero + 1.0f;
-  v = v > zero ? v : zero;
-  v = v < one ? v : one;
+  v = vmin(vmax(v, zero), one);
   return __builtin_convertvector(v * 255.0f + 0.5f, i32x4);
 }
 
@@ -84,45 +80,64 @@ inline i32x4 to_unorm8(f32x4 v) {
 template <ColorFormat P> void per_fragment_row(const float (*sc)[64], int j, Row& out) {
   for (int h = 0; h < 2; ++h) {
     f32x4 ch[4];
-    for (int c = 0; c < 4; ++c) std::memcpy(&ch[c], &sc[c][8 * j + 4 * h], sizeof(f32x4));
+    for (int c = 0; c < 4; ++c)
+      std::memcpy(&ch[c], &sc[c][8 * j + 4 * h], sizeof(f32x4));
     out.v[h] = pack4<P>(to_unorm8(ch[0]), to_unorm8(ch[1]), to_unorm8(ch[2]), to_unorm8(ch[3]));
   }
 }
 
-// Perspective-correct colour of one block row (GL 2.1 §3.5.1 eq 3.9): c = (c/w) / (1/w).
-template <ColorFormat P> void shade_row(const FragInputs& in, int di, int dj, Row& out) {
-  const float fi = static_cast<float>(di), fj = static_cast<float>(dj);
-  const PlaneF iw = in.inv_w;
-  const float iwr = iw.v0 + fi * iw.dx + fj * iw.dy;
-  const f32x4 w[2] = {1.0f / (iwr + kLaneLo * iw.dx), 1.0f / (iwr + kLaneHi * iw.dx)};
-  for (int h = 0; h < 2; ++h) {
-    const f32x4 lane = h ? kLaneHi : kLaneLo;
-    i32x4 c[4];
-    for (int k = 0; k < 4; ++k) {
-      const PlaneF p = in.color_w[k];
-      const float cr = p.v0 + fi * p.dx + fj * p.dy;
-      c[k] = to_unorm8((cr + lane * p.dx) * w[h]);
+// The colour planes of a smoothly shaded primitive with lane k holding the channel stored at
+// byte k of a pixel in the packed format P, and each pixel's offset i * dx from its row's start:
+// set up once per block, so that a row is computed pixel by pixel with the four channels in
+// one vector and packed with two instructions.
+template <ColorFormat P> struct SmoothPlanes {
+  f32x4 v0 = {}, dx = {}, dy = {};
+  f32x4 step[N] = {};
+  // 1/w is exactly 1 everywhere (no perspective, w = 1): then every w below is exactly 1 and
+  // dividing and multiplying by it change nothing, so both are skipped.
+  bool unit_w = true;
+
+  void init(const FragInputs& in) {
+    using L = Layout<P>;
+    const int offs[4] = {L::r, L::g, L::b, L::a};
+    for (int c = 0; c < 4; ++c) {
+      v0[offs[c]] = in.color_w[c].v0;
+      dx[offs[c]] = in.color_w[c].dx;
+      dy[offs[c]] = in.color_w[c].dy;
     }
-    out.v[h] = pack4<P>(c[0], c[1], c[2], c[3]);
+    for (int i = 0; i < N; ++i)
+      step[i] = static_cast<float>(i) * dx;
+    unit_w = in.inv_w.v0 == 1.0f && in.inv_w.dx == 0.0f && in.inv_w.dy == 0.0f;
   }
+};
+
+// Perspective-correct colour of one block row (GL 2.1 §3.5.1 eq 3.9): c = (c/w) / (1/w), each
+// channel of the pixel at (ox + di + i, oy + dj) computed as ((v0 + di dx + dj dy) + i dx) w.
+template <ColorFormat P>
+[[gnu::always_inline]] inline void shade_row(const SmoothPlanes<P>& sp, const FragInputs& in,
+                                             int di, int dj, Row& out) {
+  const float fi = static_cast<float>(di), fj = static_cast<float>(dj);
+  const f32x4 cr = sp.v0 + fi * sp.dx + fj * sp.dy;
+  i32x4 px[N];
+  if (sp.unit_w) {
+    for (int i = 0; i < N; ++i)
+      px[i] = to_unorm8(cr + sp.step[i]);
+  } else {
+    const PlaneF iw = in.inv_w;
+    const float iwr = iw.v0 + fi * iw.dx + fj * iw.dy;
+    const f32x4 w[2] = {1.0f / (iwr + kLaneLo * iw.dx), 1.0f / (iwr + kLaneHi * iw.dx)};
+    for (int i = 0; i < N; ++i)
+      px[i] = to_unorm8((cr + sp.step[i]) * w[i >> 2][i & 3]);
+  }
+  out.v[0] = pack_pixels(px[0], px[1], px[2], px[3]);
+  out.v[1] = pack_pixels(px[4], px[5], px[6], px[7]);
 }
 
-// SRC_ALPHA, ONE_MINUS_SRC_ALPHA, FUNC_ADD in exact unorm8 (blend.h blend_over_channel):
-// the products are exact in float, and round(x / 255) is (x + 127 + 1 + ((x + 127) >> 8)) >> 8.
-template <ColorFormat F> void blend_over_row(Row& s, const Row& d) {
-  using L = Layout<F>;
-  constexpr int offs[4] = {L::r, L::g, L::b, L::a};
-  for (int h = 0; h < 2; ++h) {
-    const f32x4 a = channel_f(s.v[h], L::a), ia = 255.0f - a;
-    u32x4 out = {};
-    for (int k = 0; k < 4; ++k) {
-      const f32x4 x = channel_f(s.v[h], offs[k]) * a + channel_f(d.v[h], offs[k]) * ia;
-      const i32x4 n = __builtin_convertvector(x, i32x4) + 127;
-      const i32x4 q = (n + 1 + (n >> 8)) >> 8;
-      out |= reinterpret_cast<u32x4>(q) << byte_shift(offs[k]);
-    }
-    s.v[h] = out;
-  }
+// SRC_ALPHA, ONE_MINUS_SRC_ALPHA, FUNC_ADD in exact unorm8 (blend.h blend_over_channel) in
+// 16-bit lanes (blend_simd.h).
+template <ColorFormat F> inline void blend_over_row(Row& s, const Row& d) {
+  for (int h = 0; h < 2; ++h)
+    s.v[h] = blend_over4<Layout<F>::a>(s.v[h], d.v[h]);
 }
 
 template <ColorFormat F> void unpack_pixel(uint32_t px, bool has_alpha, uint8_t c[4]) {
@@ -134,9 +149,15 @@ template <ColorFormat F> void unpack_pixel(uint32_t px, bool has_alpha, uint8_t 
   c[3] = has_alpha ? static_cast<uint8_t>(px >> byte_shift(L::a)) : 255;
 }
 
-// Any other blend: one fragment at a time through blend_pixel (float, blend.h).
+// Any other blend: factors without the constant colour in 16-bit lanes (blend_simd.h, the
+// same bytes as blend_pixel), the others one fragment at a time through blend_pixel (float).
 template <ColorFormat F>
 void blend_generic_row(const FragCtx& ctx, unsigned m, Row& s, const Row& d) {
+  if (ctx.blend_fixed) {
+    for (int h = 0; h < 2; ++h)
+      s.v[h] = blend_fixed4<Layout<F>::a>(ctx.blend, ctx.key.has_alpha, s.v[h], d.v[h]);
+    return;
+  }
   alignas(16) uint32_t sp[N], dp[N];
   std::memcpy(sp, &s, sizeof(sp));
   std::memcpy(dp, &d, sizeof(dp));
@@ -155,26 +176,30 @@ void blend_generic_row(const FragCtx& ctx, unsigned m, Row& s, const Row& d) {
 // that passed. z is the plane value in depth-buffer units, clamped to [0, 2^bits - 1] (window
 // z clamped to [0,1], GL 2.1 §2.11.1) and rounded to the nearest representable value.
 template <DepthPath D>
-unsigned depth_row(const FragCtx& ctx, const FragInputs& in, int bx, int y, int di, int dj,
-                   unsigned m) {
+[[gnu::always_inline]] inline unsigned depth_row(const FragCtx& ctx, const FragInputs& in, int bx,
+                                                 int y, int di, int dj, unsigned m) {
   uint32_t* const d = ctx.depth + static_cast<ptrdiff_t>(y) * ctx.depth_stride + bx;
   const PlaneD zp = in.z;
   const double zr = zp.v0 + di * zp.dx + dj * zp.dy;
   const f64x2 zero = {}, zmax = zero + ctx.depth_max;
-  // Built as vectors directly: storing lanes one by one and reloading them as a vector
-  // would stall on store forwarding.
-  uint32_t q[N];
+  f64x2 zc[N / 2];
   for (int h = 0; h < N / 2; ++h) {
     const f64x2 lane = {2.0 * h, 2.0 * h + 1.0};
-    f64x2 z = zr + lane * zp.dx;
-    z = z > zero ? z : zero;
-    z = z < zmax ? z : zmax;
-    z += 0.5;
-    q[2 * h] = static_cast<uint32_t>(static_cast<int64_t>(z[0]));
-    q[2 * h + 1] = static_cast<uint32_t>(static_cast<int64_t>(z[1]));
+    const f64x2 z = zr + lane * zp.dx;
+    zc[h] = vmin(vmax(z, zero), zmax) + 0.5;
   }
-  const u32x4 zv[2] = {{q[0], q[1], q[2], q[3]}, {q[4], q[5], q[6], q[7]}};
-  const uint32_t* const zq = q;
+  // The values are non-negative, so truncation is the floor. Below 2^31 the conversion is the
+  // packed one (two lanes per instruction on SSE2); 32-bit buffers convert lane by lane.
+  u32x4 zv[2] = {};
+  if (ctx.depth_max < 2147483648.0) {
+    for (int k = 0; k < 2; ++k)
+      zv[k] = reinterpret_cast<u32x4>(__builtin_convertvector(
+          __builtin_shufflevector(zc[2 * k], zc[2 * k + 1], 0, 1, 2, 3), i32x4));
+  } else {
+    for (int k = 0; k < 2; ++k)
+      for (int l = 0; l < 4; ++l)
+        zv[k][l] = static_cast<uint32_t>(static_cast<int64_t>(zc[2 * k + l / 2][l & 1]));
+  }
   const bool write = D != DepthPath::Generic || ctx.depth_write;
   if (bx + N <= ctx.fb_width) {
     // The whole row lies in the buffer: test all eight lanes and keep the covered ones.
@@ -196,7 +221,8 @@ unsigned depth_row(const FragCtx& ctx, const FragInputs& in, int bx, int y, int 
     }
     const unsigned bits = lane_bits(pass[0], pass[1]);
     if (write && bits != 0) {
-      for (int h = 0; h < 2; ++h) old[h] = pass[h] ? zv[h] : old[h];
+      for (int h = 0; h < 2; ++h)
+        old[h] = pass[h] ? zv[h] : old[h];
       std::memcpy(d, old, sizeof(old));
     }
     return bits;
@@ -207,16 +233,16 @@ unsigned depth_row(const FragCtx& ctx, const FragInputs& in, int bx, int y, int 
     if (((m >> i) & 1u) == 0) continue;
     bool pass;
     if constexpr (D == DepthPath::LessWrite) {
-      pass = zq[i] < d[i];
+      pass = zv[i >> 2][i & 3] < d[i];
     } else if constexpr (D == DepthPath::LequalWrite) {
-      pass = zq[i] <= d[i];
+      pass = zv[i >> 2][i & 3] <= d[i];
     } else {
-      const unsigned rel = zq[i] < d[i] ? 1u : (zq[i] == d[i] ? 2u : 4u);
+      const unsigned rel = zv[i >> 2][i & 3] < d[i] ? 1u : (zv[i >> 2][i & 3] == d[i] ? 2u : 4u);
       pass = (ctx.depth_func & rel) != 0;
     }
     if (pass) {
       bits |= 1u << i;
-      if (write) d[i] = zq[i];
+      if (write) d[i] = zv[i >> 2][i & 3];
     }
   }
   return bits;
@@ -244,8 +270,8 @@ template <ColorFormat P> unsigned alpha_row(const FragCtx& ctx, const Row& s, un
 // where the depth test failed, dppass where both passed (or the depth test is off, which
 // counts as passing). Returns the fragments that passed both tests.
 template <DepthPath D>
-unsigned stencil_depth_row(const FragCtx& ctx, const FragInputs& in, int bx, int y, int di,
-                           int dj, unsigned m) {
+unsigned stencil_depth_row(const FragCtx& ctx, const FragInputs& in, int bx, int y, int di, int dj,
+                           unsigned m) {
   uint8_t* const st = ctx.stencil + static_cast<ptrdiff_t>(y) * ctx.fb_width + bx;
   // Whole rows inside the buffer are loaded and stored as eight bytes; the last block of a
   // row whose width is not a multiple of 8 touches only its fragments.
@@ -283,10 +309,10 @@ unsigned stencil_depth_row(const FragCtx& ctx, const FragInputs& in, int bx, int
     const i32x4 keep = ~(sfail[h] | dpfail[h] | dppass[h]);
     const i32x4 nv = (stencil_op_lanes(ctx.stencil_ops[0], v[h], ref) & sfail[h]) |
                      (stencil_op_lanes(ctx.stencil_ops[1], v[h], ref) & dpfail[h]) |
-                     (stencil_op_lanes(ctx.stencil_ops[2], v[h], ref) & dppass[h]) |
-                     (v[h] & keep);
+                     (stencil_op_lanes(ctx.stencil_ops[2], v[h], ref) & dppass[h]) | (v[h] & keep);
     const i32x4 w = (v[h] & ~wm) | (nv & wm);
-    for (int k = 0; k < 4; ++k) out[4 * h + k] = static_cast<uint8_t>(w[k]);
+    for (int k = 0; k < 4; ++k)
+      out[4 * h + k] = static_cast<uint8_t>(w[k]);
   }
   if (whole) {
     std::memcpy(st, out, N);
@@ -300,23 +326,27 @@ unsigned stencil_depth_row(const FragCtx& ctx, const FragInputs& in, int bx, int
 // Blend or logical operation, then colour mask, of source row `s` against destination `dst`
 // (GL 2.1 §4.1.8, §4.1.10, §4.2.2); the result is left in `s`.
 template <ColorFormat F, ColorPath C, BlendPath B>
-inline void combine_row4(const FragCtx& ctx, unsigned m, bool logic, Row& s, const Row& dst) {
+[[gnu::always_inline]] inline void combine_row4(const FragCtx& ctx, unsigned m, bool logic, Row& s,
+                                                const Row& dst) {
   if constexpr (B == BlendPath::Over)
     blend_over_row<F>(s, dst);
   else if constexpr (B == BlendPath::Generic)
     blend_generic_row<F>(ctx, m, s, dst);
   if (logic)
-    for (int h = 0; h < 2; ++h) s.v[h] = apply_logic(ctx.logic, s.v[h], dst.v[h]);
+    for (int h = 0; h < 2; ++h)
+      s.v[h] = apply_logic(ctx.logic, s.v[h], dst.v[h]);
   if constexpr (C == ColorPath::Partial) {
     const u32x4 keep = u32x4{} + ctx.color_keep;
-    for (int h = 0; h < 2; ++h) s.v[h] = (dst.v[h] & keep) | (s.v[h] & ~keep);
+    for (int h = 0; h < 2; ++h)
+      s.v[h] = (dst.v[h] & keep) | (s.v[h] & ~keep);
   }
 }
 
 // Blend, colour mask and store of one row of a 4-byte format (GL 2.1 §4.1.8, §4.2.2). Full
 // rows load and store the eight pixels whole; others touch only their fragments.
 template <ColorFormat F, ColorPath C, BlendPath B, bool X>
-void write_row4(const FragCtx& ctx, uint8_t* row, unsigned m, bool in_buffer, Row& s) {
+[[gnu::always_inline]] inline void write_row4(const FragCtx& ctx, uint8_t* row, unsigned m,
+                                              bool in_buffer, Row& s) {
   constexpr bool kReadsDst = B != BlendPath::Off || C == ColorPath::Partial;
   // GL 2.1 §4.1.10: the logical operation takes blending's place (the key has blend off).
   const bool logic = X && ctx.key.logic_op;
@@ -330,9 +360,14 @@ void write_row4(const FragCtx& ctx, uint8_t* row, unsigned m, bool in_buffer, Ro
     Row dst;
     std::memcpy(&dst, row, sizeof(dst));
     combine_row4<F, C, B>(ctx, m, logic, s, dst);
+    if (m == 0xffu) {
+      std::memcpy(row, &s, sizeof(s));
+      return;
+    }
     i32x4 lanes[2];
     bits_to_lanes(m, lanes[0], lanes[1]);
-    for (int h = 0; h < 2; ++h) dst.v[h] = lanes[h] ? s.v[h] : dst.v[h];
+    for (int h = 0; h < 2; ++h)
+      dst.v[h] = lanes[h] ? s.v[h] : dst.v[h];
     std::memcpy(row, &dst, sizeof(dst));
     return;
   }
@@ -365,7 +400,8 @@ void write_row3(const FragCtx& ctx, uint8_t* row, unsigned m, const Row& s) {
     if constexpr (B != BlendPath::Off) {
       const uint8_t d[4] = {p[0], p[1], p[2], 255}; // no alpha: destination alpha is 1
       if constexpr (B == BlendPath::Over) {
-        for (int k = 0; k < 3; ++k) c[k] = blend_over_channel(c[k], d[k], c[3]);
+        for (int k = 0; k < 3; ++k)
+          c[k] = blend_over_channel(c[k], d[k], c[3]);
       } else {
         uint8_t o[4];
         blend_pixel(ctx.blend, c, d, o);
@@ -376,7 +412,8 @@ void write_row3(const FragCtx& ctx, uint8_t* row, unsigned m, const Row& s) {
       const uint32_t src = c[0] | (c[1] << 8) | (c[2] << 16);
       const uint32_t dst = p[0] | (p[1] << 8) | (p[2] << 16);
       const uint32_t out = apply_logic(ctx.logic, src, dst);
-      for (int k = 0; k < 3; ++k) c[k] = static_cast<uint8_t>(out >> (8 * k));
+      for (int k = 0; k < 3; ++k)
+        c[k] = static_cast<uint8_t>(out >> (8 * k));
     }
     for (int k = 0; k < 3; ++k)
       p[k] = C == ColorPath::Partial ? static_cast<uint8_t>((p[k] & keep[k]) | (c[k] & ~keep[k]))
@@ -393,9 +430,11 @@ void block_loop(const FragCtx& ctx, const FragInputs& in, int bx, int by, uint64
   // Pixels travel packed in the format's byte order; RGB8 rows are packed as RGBA8.
   constexpr ColorFormat P = L::bpp == 4 ? F : ColorFormat::RGBA8;
   [[maybe_unused]] Row const_row{};
+  [[maybe_unused]] SmoothPlanes<P> smooth;
+  if constexpr (S == ShadePath::Smooth) smooth.init(in);
   if constexpr (S == ShadePath::Const) {
-    const uint32_t px = pack_pixel<P>(in.const_color[0], in.const_color[1], in.const_color[2],
-                                      in.const_color[3]);
+    const uint32_t px =
+        pack_pixel<P>(in.const_color[0], in.const_color[1], in.const_color[2], in.const_color[3]);
     const_row.v[0] = const_row.v[1] = u32x4{} + px;
   }
   // Texturing and fog: the whole block's colours first (fragment/shade.cpp).
@@ -419,7 +458,7 @@ void block_loop(const FragCtx& ctx, const FragInputs& in, int bx, int by, uint64
         else if constexpr (S == ShadePath::PerFragment)
           per_fragment_row<P>(shaded_block, j, s);
         else
-          shade_row<P>(in, di, dj, s);
+          shade_row<P>(smooth, in, di, dj, s);
         shaded = true;
         m = alpha_row<P>(ctx, s, m);
         if (m == 0) continue;
@@ -447,7 +486,7 @@ void block_loop(const FragCtx& ctx, const FragInputs& in, int bx, int by, uint64
         else if constexpr (S == ShadePath::PerFragment)
           per_fragment_row<P>(shaded_block, j, s);
         else
-          shade_row<P>(in, di, dj, s);
+          shade_row<P>(smooth, in, di, dj, s);
       }
       if constexpr (L::bpp == 4)
         write_row4<F, C, B, X>(ctx, row, m, bx + N <= ctx.fb_width, s);
@@ -466,8 +505,11 @@ constexpr int kColorInstances =
 
 constexpr int color_index(DepthPath d, ColorFormat f, ColorPath c, BlendPath b, ShadePath s) {
   return (((static_cast<int>(d) * kColorFormatCount + static_cast<int>(f)) * 2 +
-           (c == ColorPath::Partial ? 1 : 0)) * kBlendPathCount + static_cast<int>(b)) *
-             kShadePathCount + static_cast<int>(s);
+           (c == ColorPath::Partial ? 1 : 0)) *
+              kBlendPathCount +
+          static_cast<int>(b)) *
+             kShadePathCount +
+         static_cast<int>(s);
 }
 
 template <int I, bool X> constexpr BlockFn color_entry() {
@@ -583,12 +625,23 @@ void prepare_fragments(const RasterState& rs, const Framebuffer& fb, FragCtx& ct
   ctx.depth_func = k.depth_func;
   ctx.depth_write = k.depth_write;
   switch (k.format) {
-  case ColorFormat::RGBA8: ctx.color_keep = keep_mask<ColorFormat::RGBA8>(k.color_mask); break;
-  case ColorFormat::BGRA8: ctx.color_keep = keep_mask<ColorFormat::BGRA8>(k.color_mask); break;
-  case ColorFormat::ARGB8: ctx.color_keep = keep_mask<ColorFormat::ARGB8>(k.color_mask); break;
-  case ColorFormat::RGB8: ctx.color_keep = keep_mask<ColorFormat::RGB8>(k.color_mask); break;
+  case ColorFormat::RGBA8:
+    ctx.color_keep = keep_mask<ColorFormat::RGBA8>(k.color_mask);
+    break;
+  case ColorFormat::BGRA8:
+    ctx.color_keep = keep_mask<ColorFormat::BGRA8>(k.color_mask);
+    break;
+  case ColorFormat::ARGB8:
+    ctx.color_keep = keep_mask<ColorFormat::ARGB8>(k.color_mask);
+    break;
+  case ColorFormat::RGB8:
+    ctx.color_keep = keep_mask<ColorFormat::RGB8>(k.color_mask);
+    break;
   }
-  if (k.blend) ctx.blend = make_blend_params(rs);
+  if (k.blend) {
+    ctx.blend = make_blend_params(rs);
+    ctx.blend_fixed = blend_params_fixed(ctx.blend);
+  }
   if (k.ext()) prepare_ext(rs, fb, ctx);
   ctx.fb_width = fb.width;
   ctx.clip_x0 = 0;

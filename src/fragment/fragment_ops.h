@@ -63,6 +63,7 @@ struct FragCtx {
   bool depth_write = false;  // for the generic path
   uint32_t color_keep = 0;   // partial colour mask: bits of the stored pixel to keep
   BlendParams blend;
+  bool blend_fixed = false; // blend_simd.h blend_params_fixed(blend): the 16-bit generic path
   // Values of the operations StateKey::ext() covers; read only by the extended instances.
   uint8_t alpha_func = 0;      // depth_func_bits encoding (GL 2.1 §4.1.4)
   uint8_t alpha_ref = 0;       // the reference as 8-bit fixed point (§2.14.9)

@@ -10,6 +10,9 @@
 #include <algorithm>
 #include <bit>
 #include <cmath>
+#include <cstdint>
+
+#include "fragment/fog_equation.h"
 
 namespace pineda {
 
@@ -29,7 +32,16 @@ inline float eval(const PlaneF& p, float fi, float fj) {
 // LINEAR_MIPMAP_*) follows llvmpipe's.
 inline float fast_log2(float x) {
   int e = 0;
-  const float m = std::frexp(x, &e); // x = m 2^e, m in [1/2, 1)
+  float m;
+  const uint32_t bits = std::bit_cast<uint32_t>(x);
+  const uint32_t biased = (bits >> 23) & 0xffu;
+  if (biased != 0 && biased != 0xff) {
+    // A normal number: frexp's m and e read straight from the fields (no library call).
+    e = static_cast<int>(biased) - 126;
+    m = std::bit_cast<float>((bits & 0x807fffffu) | (126u << 23));
+  } else {
+    m = std::frexp(x, &e); // x = m 2^e, m in [1/2, 1)
+  }
   return static_cast<float>(e - 2) + 2.0f * m;
 }
 
@@ -175,24 +187,7 @@ void apply_tex_env(const ShadeUnit& u, TexBase base, const float cp[4], const fl
 }
 
 float fog_factor(const ShadeSetup& ss, float c) {
-  float f;
-  switch (ss.fog_mode) {
-  case GL_LINEAR: {
-    // §3.10 eq 3.27: f = (end - c) / (end - start); equal start and end leave no fog range.
-    const float range = ss.fog_end - ss.fog_start;
-    f = range != 0.0f ? (ss.fog_end - c) / range : 1.0f;
-    break;
-  }
-  case GL_EXP:
-    f = std::exp(-ss.fog_density * c);
-    break;   // eq 3.25
-  default: { // EXP2, eq 3.26
-    const float dc = ss.fog_density * c;
-    f = std::exp(-dc * dc);
-    break;
-  }
-  }
-  return clamp01(f);
+  return fog_equation(ss.fog_mode, ss.fog_density, ss.fog_start, ss.fog_end, c);
 }
 
 void shade_block(const FragCtx& ctx, const FragInputs& in, int bx, int by, uint64_t mask,
@@ -340,7 +335,9 @@ void shade_block(const FragCtx& ctx, const FragInputs& in, int bx, int by, uint6
     if (ss.fog) {
       const float fi = fi0 + static_cast<float>(p & 7), fj = fj0 + static_cast<float>(p >> 3);
       const float coord = eval(si.fog_w, fi, fj) * w[p];
-      const float fog = fog_factor(ss, coord);
+      // GL_FOG_HINT = FASTEST: the geometry stage evaluated f per vertex and `coord` is its
+      // interpolation (§3.10 "may be computed at each vertex and interpolated").
+      const float fog = ss.fog_per_vertex ? clamp01(coord) : fog_factor(ss, coord);
       // §3.10: C = f C_r + (1 - f) C_f on R, G and B; alpha is unchanged.
       for (int ch = 0; ch < 3; ++ch)
         c[ch] = fog * c[ch] + (1.0f - fog) * ss.fog_color[ch];

@@ -42,6 +42,9 @@ struct ShadeSetup {
   GLenum fog_mode = GL_EXP;
   float fog_color[4] = {0, 0, 0, 0};
   float fog_density = 1.0f, fog_start = 0.0f, fog_end = 1.0f;
+  // GL_FOG_HINT = FASTEST (§5.6): the kAttrFog slot holds the factor f computed per vertex
+  // (geometry/texcoord.cpp), not the fog coordinate; only read when `fog` is set.
+  bool fog_per_vertex = false;
 };
 
 // Interpolation inputs of one primitive for the per-fragment path: perspective-correct planes

@@ -552,17 +552,20 @@ int pixel_type_size(GLenum type) {
 }
 
 GLenum read_format_type_error(GLenum format, GLenum type) {
-  if (!is_valid_read_format(format) || !is_valid_type(type)) return GL_INVALID_ENUM;
-  // §3.6.4: BITMAP with a format other than COLOR_INDEX or STENCIL_INDEX.
-  if (type == GL_BITMAP && format != GL_COLOR_INDEX && format != GL_STENCIL_INDEX)
-    return GL_INVALID_ENUM;
+  if (!is_valid_type(type)) return GL_INVALID_ENUM;
   // Table 3.8: 3-component packed types go with RGB, 4-component ones with RGBA or BGRA.
+  // Checked before the format, as check_pixel_format_type (pixel/unpack.h) does: with an
+  // unknown format both errors apply and Mesa reports this one.
   PackedLayout layout;
   if (packed_layout(type, layout)) {
     const bool ok = layout.components == 3 ? format == GL_RGB
                                            : (format == GL_RGBA || format == GL_BGRA);
     if (!ok) return GL_INVALID_OPERATION;
   }
+  if (!is_valid_read_format(format)) return GL_INVALID_ENUM;
+  // §3.6.4: BITMAP with a format other than COLOR_INDEX or STENCIL_INDEX.
+  if (type == GL_BITMAP && format != GL_COLOR_INDEX && format != GL_STENCIL_INDEX)
+    return GL_INVALID_ENUM;
   // §4.3.2: COLOR_INDEX reads fail in RGBA mode, the only mode Pineda has.
   if (format == GL_COLOR_INDEX) return GL_INVALID_OPERATION;
   return GL_NO_ERROR;

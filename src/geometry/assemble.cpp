@@ -36,6 +36,8 @@ inline unsigned flag_bit(const PVertex& v, unsigned bit) {
 
 // Production sink: straight to the rasterizer.
 struct RasterSink {
+  // A zero-area polygon in FILL mode covers no pixel: it is dropped before the rasterizer.
+  static constexpr bool kKeepsZeroArea = false;
   const DrawCall& dc;
   void triangle(const PVertex& a, const PVertex& b, const PVertex& c, const PVertex& provoking,
                 bool back) {
@@ -105,7 +107,7 @@ private:
     const bool back = is_back_facing(face_, area2);
     if (is_culled(face_, back)) return;
     if (fill_fast_) {
-      if (area2 != 0) sink_.triangle(a, b, c, pv, back);
+      if (area2 != 0 || Sink::kKeepsZeroArea) sink_.triangle(a, b, c, pv, back);
       return;
     }
     const PVertex* v[3] = {&a, &b, &c};
@@ -369,21 +371,27 @@ void draw_shared(const DrawCall& dc, const FragCtx& frag, int n, GLenum mode, co
 
 void draw_primitives(const DrawCall& dc, GLenum mode, const PVertex* verts, const uint32_t* indices,
                      size_t count) {
-  // The fragment stage is set up once for the whole draw, not once per primitive.
-  FragCtx frag;
-  prepare_fragments(*dc.state, *dc.fb, frag);
-  if (dc.workers != nullptr && !frag.noop && verts != nullptr &&
-      worth_sharing(*dc.state, frag, mode, verts, indices, count)) {
+  // The fragment stage is set up once for the whole draw, not once per primitive, or comes
+  // with the draw (the context's draw cache).
+  FragCtx local;
+  const FragCtx* frag = dc.frag;
+  if (frag == nullptr) {
+    prepare_fragments(*dc.state, *dc.fb, local);
+    frag = &local;
+  }
+  frag->samples_passed = 0;
+  if (dc.workers != nullptr && !frag->noop && verts != nullptr &&
+      worth_sharing(*dc.state, *frag, mode, verts, indices, count)) {
     const int n = dc.workers->threads();
-    if (n > 1) return draw_shared(dc, frag, n, mode, verts, indices, count);
+    if (n > 1) return draw_shared(dc, *frag, n, mode, verts, indices, count);
   }
   DrawCall prepared = dc;
-  prepared.frag = &frag;
+  prepared.frag = frag;
   float stipple_counter = 0.0f;
   prepared.stipple_counter = &stipple_counter;
   RasterSink sink{prepared};
   assemble(sink, prepared, mode, verts, indices, count);
-  if (dc.samples_passed != nullptr) *dc.samples_passed += frag.samples_passed;
+  if (dc.samples_passed != nullptr) *dc.samples_passed += frag->samples_passed;
 }
 
 void draw_primitives_to(PrimitiveSink& sink, const DrawCall& dc, GLenum mode, const PVertex* verts,

@@ -65,12 +65,14 @@ void copy_flat_colors(PVertex& dst, const PVertex& provoking);
 // `first_edge` is where LINE mode starts walking (Mesa's order for an unclipped triangle
 // starts at the closing edge). FILL draws the fan v0, vi, vi+1; LINE the boundary edges;
 // POINT the vertices that start a boundary edge. A zero-area polygon fills nothing but still
-// outlines in LINE and POINT mode (it is a back-facing polygon, GL 2.1 §3.5.1).
+// outlines in LINE and POINT mode (it is a back-facing polygon, GL 2.1 §3.5.1); sinks with
+// kKeepsZeroArea (selection, feedback) receive it in FILL mode too.
 template <class Sink>
 void emit_polygon(const FaceState& fs, Sink& sink, const PVertex* const* v, const bool* edge, int n,
                   int first_edge, const PVertex& provoking, bool back, int64_t area2) {
   const GLenum mode = fs.mode[back ? 1 : 0];
-  if ((mode == GL_FILL && area2 == 0) || n < 3 || n > kMaxClipVerts) return;
+  if ((mode == GL_FILL && area2 == 0 && !Sink::kKeepsZeroArea) || n < 3 || n > kMaxClipVerts)
+    return;
 
   // Two-sided lighting: local copies with the back colours in the colour slots, so the
   // rasterizer needs to know nothing about it.
@@ -127,6 +129,9 @@ void emit_polygon(const FaceState& fs, Sink& sink, const PVertex* const* v, cons
 // primitives() itself uses a sink that calls raster_* directly (no indirection).
 class PrimitiveSink {
 public:
+  // GL 2.1 §5.2, §5.3: selection and feedback report every polygon that survives clipping and
+  // culling, a zero-area one too (culling is the only test of its facing), as Mesa does.
+  static constexpr bool kKeepsZeroArea = true;
   virtual ~PrimitiveSink() = default;
   virtual void triangle(const PVertex& a, const PVertex& b, const PVertex& c,
                         const PVertex& provoking, bool back_facing) = 0;

@@ -133,11 +133,13 @@ inline void all_arrays(const VertexArrays& arr, const ClientArray* (&out)[kArray
   out[3] = &arr.edgeflag;
   out[4] = &arr.secondary;
   out[5] = &arr.fog;
-  for (int u = 0; u < kMaxTexUnits; ++u) out[6 + u] = &arr.texcoord[u];
+  for (int u = 0; u < kMaxTexUnits; ++u)
+    out[6 + u] = &arr.texcoord[u];
 }
 
 template <typename Elements>
-bool fetch(Context* ctx, Elements el, size_t n, size_t max_element, InputVertex* out) {
+bool fetch(Context* ctx, Elements el, size_t n, size_t max_element, uint32_t tex_units,
+           InputVertex* out) {
   const VertexArrays& arr = ctx->arrays;
   const ClientArray* arrays[kArrayCount];
   all_arrays(arr, arrays);
@@ -164,8 +166,15 @@ bool fetch(Context* ctx, Elements el, size_t n, size_t max_element, InputVertex*
     def.color2[i] = ctx->cur_color2[i];
   def.fog = ctx->texpipe.cur_fog_coord;
   def.edge = ctx->cur_edge ? 1u : 0u;
-  for (size_t k = 0; k < n; ++k)
-    out[k] = def;
+  // The attributes before `tex` always, then only the units asked for.
+  constexpr size_t kHead = offsetof(InputVertex, tex);
+  for (size_t k = 0; k < n; ++k) {
+    std::memcpy(static_cast<void*>(&out[k]), &def, kHead); // trivially copyable
+    for (uint32_t units = tex_units; units != 0; units &= units - 1) {
+      const int u = __builtin_ctz(units);
+      std::memcpy(out[k].tex[u], def.tex[u], sizeof def.tex[u]);
+    }
+  }
 
   if (bases[0]) convert_any(arr.vertex, bases[0], false, el, n, out, offsetof(InputVertex, pos));
   if (bases[1]) convert_any(arr.color, bases[1], true, el, n, out, offsetof(InputVertex, color));
@@ -174,7 +183,7 @@ bool fetch(Context* ctx, Elements el, size_t n, size_t max_element, InputVertex*
     convert_any(arr.secondary, bases[4], true, el, n, out, offsetof(InputVertex, color2));
   if (bases[5]) convert_any(arr.fog, bases[5], false, el, n, out, offsetof(InputVertex, fog));
   for (int u = 0; u < kMaxTexUnits; ++u)
-    if (bases[6 + u])
+    if (bases[6 + u] && (tex_units >> u & 1u) != 0)
       convert_any(arr.texcoord[u], bases[6 + u], false, el, n, out,
                   offsetof(InputVertex, tex) + sizeof(float[4]) * static_cast<size_t>(u));
   if (bases[3]) {
@@ -195,16 +204,17 @@ bool arrays_hold(Context* ctx, size_t max_element) {
   return true;
 }
 
-bool fetch_range(Context* ctx, size_t first, size_t n, InputVertex* out) {
+bool fetch_range(Context* ctx, size_t first, size_t n, InputVertex* out, uint32_t tex_units) {
   if (n == 0) return true;
-  return fetch(ctx, RangeElements{first}, n, first + n - 1, out);
+  return fetch(ctx, RangeElements{first}, n, first + n - 1, tex_units, out);
 }
 
-bool fetch_list(Context* ctx, const uint32_t* elements, size_t n, InputVertex* out) {
+bool fetch_list(Context* ctx, const uint32_t* elements, size_t n, InputVertex* out,
+                uint32_t tex_units) {
   uint32_t max_element = 0;
   for (size_t k = 0; k < n; ++k)
     max_element = elements[k] > max_element ? elements[k] : max_element;
-  return fetch(ctx, ListElements{elements}, n, max_element, out);
+  return fetch(ctx, ListElements{elements}, n, max_element, tex_units, out);
 }
 
 } // namespace pineda

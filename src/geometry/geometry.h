@@ -12,6 +12,10 @@ namespace pineda {
 // Bring ctx->raster and the composite matrices up to date with the GL state (validate.cpp).
 void validate_state(Context* ctx);
 
+// The texture units whose InputVertex::tex coordinates a draw in the current state reads
+// (kAllTexUnits-style bit mask); validates the state.
+uint32_t input_tex_units(Context* ctx);
+
 // Transform `n` vertices and draw them in `mode`; indices (optional) select among them.
 void draw_vertices(Context* ctx, GLenum mode, const InputVertex* verts, size_t n,
                    const uint32_t* indices, size_t count);

@@ -27,11 +27,13 @@ inline void normalize3(float* v) {
   }
 }
 
-inline float clamp01(float v) { return v > 0.0f ? (v < 1.0f ? v : 1.0f) : 0.0f; }
+inline float clamp01(float v) {
+  return v > 0.0f ? (v < 1.0f ? v : 1.0f) : 0.0f;
+}
 
 // The geometric terms of one light at one vertex, shared by both faces.
 struct LightTerms {
-  float scale;  // att_i * spot_i
+  float scale;    // att_i * spot_i
   float n_dot_vp; // n . VPpli, unclamped (the back face uses its negation)
   float n_dot_h;  // n . h_i (unit h), unclamped
 };
@@ -42,15 +44,14 @@ inline float spec_power(float n_dot_h, float shininess) {
 }
 
 // c_pri and c_sec of one face: `sign` is +1 for the front (n) and -1 for the back (-n).
-void shade_face(const LightSetup& s, const Material& m, const LightTerms* terms, float sign,
-                float* pri, float* sec) {
-  // e_cm + a_cm * a_cs
+[[gnu::always_inline]] inline void shade_face(const LightSetup& s, const LitFace& m,
+                                              const LightTerms* terms, float sign, float* pri,
+                                              float* sec) {
   for (int c = 0; c < 3; ++c) {
-    pri[c] = m.emission[c] + m.ambient[c] * s.scene_ambient[c];
+    pri[c] = m.base[c];
     sec[c] = 0.0f;
   }
   for (int i = 0; i < s.count; ++i) {
-    const LightConstants& l = s.light[i];
     const LightTerms& t = terms[i];
     if (t.scale == 0.0f) continue;
     const float ndl = sign * t.n_dot_vp;
@@ -60,8 +61,8 @@ void shade_face(const LightSetup& s, const Material& m, const LightTerms* terms,
       spe = spec_power(sign * t.n_dot_h, m.shininess);
     }
     for (int c = 0; c < 3; ++c) {
-      const float amb_dif = m.ambient[c] * l.ambient[c] + dif * m.diffuse[c] * l.diffuse[c];
-      const float spec = spe * m.specular[c] * l.specular[c];
+      const float amb_dif = m.amb[i][c] + dif * m.dif[i][c];
+      const float spec = spe * m.spe[i][c];
       if (s.separate_specular) {
         pri[c] += t.scale * amb_dif;
         sec[c] += t.scale * spec;
@@ -70,12 +71,12 @@ void shade_face(const LightSetup& s, const Material& m, const LightTerms* terms,
       }
     }
   }
-  // §2.14.1: A is the alpha of d_cm; the secondary alpha is 1. §2.14.6 clamps both colours.
+  // §2.14.6 clamps both colours; the secondary alpha is 1.
   for (int c = 0; c < 3; ++c) {
     pri[c] = clamp01(pri[c]);
     sec[c] = clamp01(sec[c]);
   }
-  pri[3] = clamp01(m.diffuse[3]);
+  pri[3] = m.alpha;
   sec[3] = 1.0f;
 }
 
@@ -88,7 +89,8 @@ void setup_lighting(LightSetup& s, const LightingState& ls, const glm::mat4& mod
   s.two_side = ls.two_side;
   s.separate_specular = ls.color_control == GL_SEPARATE_SPECULAR_COLOR;
   s.need_eye_position = ls.local_viewer;
-  for (int c = 0; c < 4; ++c) s.scene_ambient[c] = ls.model_ambient[c];
+  for (int c = 0; c < 4; ++c)
+    s.scene_ambient[c] = ls.model_ambient[c];
   for (int i = 0; i < kMaxLights; ++i) {
     const Light& src = ls.light[i];
     if (!src.enabled) continue;
@@ -103,10 +105,12 @@ void setup_lighting(LightSetup& s, const LightingState& ls, const glm::mat4& mod
     if (l.positional) {
       // The vector from a vertex to the light is between two points (§2.14.1), so the
       // homogeneous position is projected first.
-      for (int c = 0; c < 3; ++c) l.position[c] = src.position[c] / w;
+      for (int c = 0; c < 3; ++c)
+        l.position[c] = src.position[c] / w;
       s.need_eye_position = true;
     } else {
-      for (int c = 0; c < 3; ++c) l.direction[c] = src.position[c];
+      for (int c = 0; c < 3; ++c)
+        l.direction[c] = src.position[c];
       normalize3(l.direction);
       // Eq. 2.3 with an infinite viewer: h = VPpli + (0, 0, 1), the same for every vertex.
       l.half[0] = l.direction[0];
@@ -115,7 +119,8 @@ void setup_lighting(LightSetup& s, const LightingState& ls, const glm::mat4& mod
       normalize3(l.half);
     }
     l.spot = src.spot_cutoff != 180.0f;
-    for (int c = 0; c < 3; ++c) l.spot_direction[c] = src.spot_direction[c];
+    for (int c = 0; c < 3; ++c)
+      l.spot_direction[c] = src.spot_direction[c];
     normalize3(l.spot_direction);
     l.spot_cos = static_cast<float>(std::cos(src.spot_cutoff * (3.14159265358979323846 / 180.0)));
     l.spot_exponent = src.spot_exponent;
@@ -126,7 +131,8 @@ void setup_lighting(LightSetup& s, const LightingState& ls, const glm::mat4& mod
       l.spot_factor = d >= l.spot_cos ? std::pow(d, l.spot_exponent) : 0.0f;
     }
     // Eq. 2.4: attenuation applies to positional lights only.
-    for (int c = 0; c < 3; ++c) l.k[c] = src.attenuation[c];
+    for (int c = 0; c < 3; ++c)
+      l.k[c] = src.attenuation[c];
     l.attenuated = l.positional && (l.k[0] != 1.0f || l.k[1] != 0.0f || l.k[2] != 0.0f);
   }
 
@@ -156,11 +162,42 @@ void setup_lighting(LightSetup& s, const LightingState& ls, const glm::mat4& mod
       s.normal_matrix[col * 3 + row] = static_cast<float>(nm[col][row] * f);
   s.normalize = normalize;
   const float* mv = &modelview[0][0];
-  for (int i = 0; i < 16; ++i) s.modelview[i] = mv[i];
+  for (int i = 0; i < 16; ++i)
+    s.modelview[i] = mv[i];
 }
 
-void light_vertex(const LightSetup& s, const Material* mat, const float pos[4],
-                  const float normal[3], const float color[4], float* attr) {
+void prepare_lit_faces(const LightSetup& s, const Material* mat, const float color[4],
+                       LitFaces& out) {
+  const int faces = s.two_side ? 2 : 1;
+  for (int f = 0; f < faces; ++f) {
+    Material m = mat[f];
+    if (s.track[f]) {
+      for (int c = 0; c < 4; ++c) {
+        if (s.track_ambient) m.ambient[c] = color[c];
+        if (s.track_diffuse) m.diffuse[c] = color[c];
+        if (s.track_specular) m.specular[c] = color[c];
+        if (s.track_emission) m.emission[c] = color[c];
+      }
+    }
+    LitFace& o = out.face[f];
+    for (int c = 0; c < 3; ++c)
+      o.base[c] = m.emission[c] + m.ambient[c] * s.scene_ambient[c];
+    for (int i = 0; i < s.count; ++i) {
+      const LightConstants& l = s.light[i];
+      for (int c = 0; c < 3; ++c) {
+        o.amb[i][c] = m.ambient[c] * l.ambient[c];
+        o.dif[i][c] = m.diffuse[c] * l.diffuse[c];
+        o.spe[i][c] = m.specular[c] * l.specular[c];
+      }
+    }
+    o.shininess = m.shininess;
+    // §2.14.1: A is the alpha of d_cm.
+    o.alpha = clamp01(m.diffuse[3]);
+  }
+}
+
+void light_vertex_faces(const LightSetup& s, const LitFaces& faces, const float pos[4],
+                        const float normal[3], float* attr) {
   // Eye-space normal.
   const float* nm = s.normal_matrix;
   float n[3];
@@ -176,7 +213,8 @@ void light_vertex(const LightSetup& s, const Material* mat, const float pos[4],
     for (int r = 0; r < 4; ++r)
       e[r] = m[r] * pos[0] + m[4 + r] * pos[1] + m[8 + r] * pos[2] + m[12 + r] * pos[3];
     const float inv_w = e[3] != 1.0f && e[3] != 0.0f ? 1.0f / e[3] : 1.0f;
-    for (int c = 0; c < 3; ++c) v[c] = e[c] * inv_w;
+    for (int c = 0; c < 3; ++c)
+      v[c] = e[c] * inv_w;
   }
   // VPe: the unit vector from the vertex to the eye at the origin (local viewer).
   float ve[3] = {-v[0], -v[1], -v[2]};
@@ -189,7 +227,8 @@ void light_vertex(const LightSetup& s, const Material* mat, const float pos[4],
     float vp[3], h[3];
     float scale = 1.0f;
     if (l.positional) {
-      for (int c = 0; c < 3; ++c) vp[c] = l.position[c] - v[c];
+      for (int c = 0; c < 3; ++c)
+        vp[c] = l.position[c] - v[c];
       const float d2 = dot3(vp, vp);
       const float d = std::sqrt(d2);
       if (d > 0.0f) {
@@ -202,11 +241,13 @@ void light_vertex(const LightSetup& s, const Material* mat, const float pos[4],
         scale *= sd >= l.spot_cos ? std::pow(sd, l.spot_exponent) : 0.0f;
       }
     } else {
-      for (int c = 0; c < 3; ++c) vp[c] = l.direction[c];
+      for (int c = 0; c < 3; ++c)
+        vp[c] = l.direction[c];
       scale = l.spot_factor;
     }
     if (s.local_viewer) {
-      for (int c = 0; c < 3; ++c) h[c] = vp[c] + ve[c];
+      for (int c = 0; c < 3; ++c)
+        h[c] = vp[c] + ve[c];
       normalize3(h);
     } else if (l.positional) {
       h[0] = vp[0], h[1] = vp[1], h[2] = vp[2] + 1.0f;
@@ -219,21 +260,16 @@ void light_vertex(const LightSetup& s, const Material* mat, const float pos[4],
     t.n_dot_h = dot3(n, h);
   }
 
-  const int faces = s.two_side ? 2 : 1;
-  for (int f = 0; f < faces; ++f) {
-    Material m = mat[f];
-    if (s.track[f]) {
-      for (int c = 0; c < 4; ++c) {
-        if (s.track_ambient) m.ambient[c] = color[c];
-        if (s.track_diffuse) m.diffuse[c] = color[c];
-        if (s.track_specular) m.specular[c] = color[c];
-        if (s.track_emission) m.emission[c] = color[c];
-      }
-    }
-    float* pri = attr + (f == 0 ? kAttrColor : kAttrBackColor);
-    float* sec = attr + (f == 0 ? kAttrColor2 : kAttrBackColor2);
-    shade_face(s, m, terms, f == 0 ? 1.0f : -1.0f, pri, sec);
-  }
+  shade_face(s, faces.face[0], terms, 1.0f, attr + kAttrColor, attr + kAttrColor2);
+  if (s.two_side)
+    shade_face(s, faces.face[1], terms, -1.0f, attr + kAttrBackColor, attr + kAttrBackColor2);
+}
+
+void light_vertex(const LightSetup& s, const Material* mat, const float pos[4],
+                  const float normal[3], const float color[4], float* attr) {
+  LitFaces faces;
+  prepare_lit_faces(s, mat, color, faces);
+  light_vertex_faces(s, faces, pos, normal, attr);
 }
 
 } // namespace pineda

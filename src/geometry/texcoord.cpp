@@ -3,6 +3,8 @@
 
 #include <cmath>
 
+#include "fragment/fog_equation.h"
+
 namespace pineda {
 
 namespace {
@@ -88,7 +90,12 @@ void tex_vertex(const TexVertexSetup& ts, const float pos[4], const float normal
   if (ts.fog) {
     // §3.10: with FOG_COORD_SRC = FRAGMENT_DEPTH the coordinate is the eye-space distance,
     // approximated (as Mesa does) by the absolute eye z.
-    attr[kAttrFog] = ts.fog_from_depth ? std::fabs(eye[2]) : fog_coord;
+    const float c = ts.fog_from_depth ? std::fabs(eye[2]) : fog_coord;
+    // §3.10: "f need not be computed at each fragment, but may be computed at each vertex and
+    // interpolated as other data are"; GL_FOG_HINT = FASTEST asks for that (§5.6).
+    attr[kAttrFog] = ts.fog_per_vertex
+                         ? fog_equation(ts.fog_mode, ts.fog_density, ts.fog_start, ts.fog_end, c)
+                         : c;
   }
 }
 

@@ -30,10 +30,16 @@ struct TexVertexSetup {
   float rescale = 1.0f;        // GL_RESCALE_NORMAL factor (1 when off)
   bool fog = false;            // the fog coordinate is live
   bool fog_from_depth = false; // FOG_COORD_SRC is FRAGMENT_DEPTH: the eye-space distance
+  // GL_FOG_HINT = FASTEST: kAttrFog receives the fog factor f (§3.10) instead of the
+  // coordinate, from these parameters.
+  bool fog_per_vertex = false;
+  GLenum fog_mode = GL_EXP;
+  float fog_density = 1.0f, fog_start = 0.0f, fog_end = 1.0f;
   TexVertexUnit unit[kMaxTexUnits];
 };
 
-// Writes attr[kAttrTex0 + 4u ..] for every live unit and attr[kAttrFog] when fog is live.
+// Writes attr[kAttrTex0 + 4u ..] for every live unit and attr[kAttrFog] when fog is live (the
+// fog coordinate, or the fog factor with fog_per_vertex).
 void tex_vertex(const TexVertexSetup& ts, const float pos[4], const float normal[3],
                 const float (*tex)[4], float fog_coord, float* attr);
 

@@ -6,6 +6,7 @@
 #include <cmath>
 
 #include "geometry/clip.h"
+#include "geometry/draw_cache.h"
 #include "geometry/geometry.h"
 #include "geometry/light_eval.h"
 #include "geometry/texcoord.h"
@@ -22,14 +23,118 @@ namespace {
 // the fragment stage does) gives the same value. With texturing (§3.8.13 precedes the colour
 // sum) or fog on, the fragment stage adds it instead.
 inline void add_secondary(float* attr, bool back) {
-  for (int c = 0; c < 3; ++c) attr[kAttrColor + c] += attr[kAttrColor2 + c];
+  for (int c = 0; c < 3; ++c)
+    attr[kAttrColor + c] += attr[kAttrColor2 + c];
   if (back)
-    for (int c = 0; c < 3; ++c) attr[kAttrBackColor + c] += attr[kAttrBackColor2 + c];
+    for (int c = 0; c < 3; ++c)
+      attr[kAttrBackColor + c] += attr[kAttrBackColor2 + c];
 }
 
 } // namespace
 
 namespace {
+
+// The clip planes and the fragment stage's setup for the current state and framebuffer,
+// rebuilt only when either changed since the last draw.
+DrawCache& current_draw_cache(Context* ctx) {
+  if (!ctx->draw_cache) ctx->draw_cache = std::make_unique<DrawCache>();
+  DrawCache& c = *ctx->draw_cache;
+  if (c.serial != ctx->raster_serial || !same_surfaces(c.surfaces, ctx->fb)) {
+    // The clip codes come from the clipper's own plane setup (guard band, user planes), so
+    // a vertex's code and the clipper's distances always agree.
+    init_clip_setup(c.clip, ctx->raster);
+    prepare_fragments(ctx->raster, ctx->fb, c.frag);
+    c.surfaces = ctx->fb;
+    c.serial = ctx->raster_serial;
+  }
+  return c;
+}
+
+// What the per-vertex loop reads, gathered once per draw.
+struct VertexJob {
+  const InputVertex* in;
+  PVertex* out;
+  size_t n;
+  const float* m; // composite matrix, column-major
+  const ClipSetup* cs;
+  const Viewport* vp;
+  const LightingState* lighting;
+  const MaterialChange* changes;
+  size_t change_count;
+  const Material* material;
+  bool color_sum, fold_sum, two_sided;
+  const TexVertexSetup* tvs;
+  bool tex_live;
+  const RasterModes* modes;
+  const glm::mat4* mv;
+};
+
+// The per-vertex loop, instantiated for lighting on or off and for whether any of texture
+// coordinates, fog or point attenuation is live, so the common draws carry no test for
+// what they do not use.
+template <bool kLit, bool kExtra> void transform_vertices(const VertexJob& job) {
+  const float* m = job.m;
+  const Material* material = job.material;
+  size_t next_change = 0;
+  // Without COLOR_MATERIAL the material terms change only with the material (§2.14.2).
+  LitFaces faces;
+  bool tracking = false;
+  if constexpr (kLit) {
+    const LightSetup& ls = job.lighting->setup;
+    tracking = ls.track[0] || ls.track[1];
+    if (!tracking) prepare_lit_faces(ls, material, nullptr, faces);
+  }
+  for (size_t i = 0; i < job.n; ++i) {
+    const InputVertex& v = job.in[i];
+    PVertex& p = job.out[i];
+    const float x = v.pos[0], y = v.pos[1], z = v.pos[2], w = v.pos[3];
+    for (int r = 0; r < 4; ++r)
+      p.clip[r] = m[r] * x + m[4 + r] * y + m[8 + r] * z + m[12 + r] * w;
+    p.clipmask = clip_code(*job.cs, p.clip);
+    if (p.clipmask == 0) to_window(p, *job.vp);
+    if constexpr (kLit) {
+      const LightSetup& ls = job.lighting->setup;
+      if (next_change < job.change_count && job.changes[next_change].vertex <= i) {
+        while (next_change < job.change_count && job.changes[next_change].vertex <= i)
+          material = job.changes[next_change++].material;
+        if (!tracking) prepare_lit_faces(ls, material, nullptr, faces);
+      }
+      if (tracking) prepare_lit_faces(ls, material, v.color, faces);
+      light_vertex_faces(ls, faces, v.pos, v.normal, p.attr);
+      if (job.fold_sum) add_secondary(p.attr, job.two_sided);
+    } else {
+      // GL 2.1 §2.14.6: with lighting off the primary colour is the current colour, clamped.
+      for (int c = 0; c < 4; ++c) {
+        const float col = v.color[c];
+        p.attr[kAttrColor + c] = col > 0.0f ? (col < 1.0f ? col : 1.0f) : 0.0f;
+      }
+      if (job.color_sum) {
+        for (int c = 0; c < 3; ++c) {
+          const float col = v.color2[c];
+          p.attr[kAttrColor2 + c] = col > 0.0f ? (col < 1.0f ? col : 1.0f) : 0.0f;
+        }
+        if (job.fold_sum) add_secondary(p.attr, false);
+      }
+    }
+    p.edgeflag = v.edge;
+    p.point_size = 1.0f;
+    if constexpr (kExtra) {
+      if (job.tex_live) tex_vertex(*job.tvs, v.pos, v.normal, v.tex, v.fog, p.attr);
+      const RasterModes& modes = *job.modes;
+      if (modes.point_attenuated) {
+        const glm::mat4& mv = *job.mv;
+        const float ez = mv[0][2] * x + mv[1][2] * y + mv[2][2] * z + mv[3][2] * w;
+        const float d = ez < 0.0f ? -ez : ez;
+        const float* a = modes.point_attenuation;
+        const float size = modes.point_size / std::sqrt(a[0] + a[1] * d + a[2] * d * d);
+        // A NaN (attenuation <= 0) becomes the minimum.
+        p.point_size = size >= modes.point_size_min
+                           ? (size < modes.point_size_max ? size : modes.point_size_max)
+                           : modes.point_size_min;
+      }
+    }
+  }
+}
 
 void draw_vertices_once(Context* ctx, GLenum mode, const InputVertex* in, size_t n,
                         const uint32_t* indices, size_t count) {
@@ -37,84 +142,48 @@ void draw_vertices_once(Context* ctx, GLenum mode, const InputVertex* in, size_t
   const RasterState& rs = ctx->raster;
   const Viewport& vp = rs.viewport;
   if (vp.w <= 0.0f || vp.h <= 0.0f) return;
-
-  // The clip codes come from the clipper's own plane setup (guard band, user planes), so a
-  // vertex's code and the clipper's distances always agree.
-  ClipSetup cs;
-  init_clip_setup(cs, rs);
+  DrawCache& cache = current_draw_cache(ctx);
 
   std::vector<PVertex>& out = ctx->pvert_scratch;
   if (out.size() < n) out.resize(n);
-  const float* m = &ctx->mvp[0][0]; // column-major
 
+  VertexJob job;
+  job.in = in;
+  job.out = out.data();
+  job.n = n;
+  job.m = &ctx->mvp[0][0];
+  job.cs = &cache.clip;
+  job.vp = &vp;
   // GL 2.1 §2.14.1: lighting replaces the current colour. Material calls between Begin and
   // End (§2.14.2) change the material from a given vertex of the primitive on.
-  LightingState& lighting = ctx->lighting;
+  const LightingState& lighting = ctx->lighting;
   const bool lit = lighting.enabled;
-  const MaterialChange* changes = lighting.imm_changes.data();
-  const size_t change_count = lit ? lighting.imm_changes.size() : 0;
-  size_t next_change = 0;
-  const Material* material = change_count != 0 ? lighting.begin_material : lighting.material;
+  job.lighting = &lighting;
+  job.changes = lighting.imm_changes.data();
+  job.change_count = lit ? lighting.imm_changes.size() : 0;
+  job.material = job.change_count != 0 ? lighting.begin_material : lighting.material;
   // §3.9: with lighting on the colour sum always applies and the secondary colour is zero
   // unless the specular term is separate; otherwise COLOR_SUM adds the current secondary
   // colour.
   // Feedback returns the primary colour alone (GL 2.1 §5.3), so nothing is folded in there.
-  const bool color_sum = (lit ? lighting.setup.separate_specular : lighting.color_sum) &&
-                         render_mode_is_render(ctx);
+  job.color_sum =
+      (lit ? lighting.setup.separate_specular : lighting.color_sum) && render_mode_is_render(ctx);
   // With texturing or fog on, the fragment stage adds the secondary colour after the texture
   // environments (fragment/shade.cpp); otherwise it is folded in here.
-  const bool fold_sum = color_sum && rs.shade == nullptr;
-  const TexVertexSetup& tvs = ctx->texpipe.vertex;
-  const bool tex_live = rs.shade != nullptr && (tvs.units != 0 || tvs.fog);
-  const bool two_sided = rs.two_sided;
+  job.fold_sum = job.color_sum && rs.shade == nullptr;
+  job.two_sided = rs.two_sided;
+  job.tvs = &ctx->texpipe.vertex;
+  job.tex_live = rs.shade != nullptr && (job.tvs->units != 0 || job.tvs->fog);
   // GL 1.4 point parameters (GL 2.1 §3.3 eq 3.1): with distance attenuation every vertex gets
   // its derived size. Mesa takes the distance as |z| in eye coordinates rather than the
   // Euclidean distance the spec names; Pineda follows llvmpipe.
-  const RasterModes& modes = rs.modes;
-  const bool attenuate = modes.point_attenuated;
-  const glm::mat4& mv = ctx->modelview.top();
-
-  for (size_t i = 0; i < n; ++i) {
-    const InputVertex& v = in[i];
-    PVertex& p = out[i];
-    const float x = v.pos[0], y = v.pos[1], z = v.pos[2], w = v.pos[3];
-    for (int r = 0; r < 4; ++r)
-      p.clip[r] = m[r] * x + m[4 + r] * y + m[8 + r] * z + m[12 + r] * w;
-    p.clipmask = clip_code(cs, p.clip);
-    if (p.clipmask == 0) to_window(p, vp);
-    if (lit) {
-      while (next_change < change_count && changes[next_change].vertex <= i)
-        material = changes[next_change++].material;
-      light_vertex(lighting.setup, material, v.pos, v.normal, v.color, p.attr);
-      if (fold_sum) add_secondary(p.attr, two_sided);
-    } else {
-      // GL 2.1 §2.14.6: with lighting off the primary colour is the current colour, clamped.
-      for (int c = 0; c < 4; ++c) {
-        const float col = v.color[c];
-        p.attr[kAttrColor + c] = col > 0.0f ? (col < 1.0f ? col : 1.0f) : 0.0f;
-      }
-      if (color_sum) {
-        for (int c = 0; c < 3; ++c) {
-          const float col = v.color2[c];
-          p.attr[kAttrColor2 + c] = col > 0.0f ? (col < 1.0f ? col : 1.0f) : 0.0f;
-        }
-        if (fold_sum) add_secondary(p.attr, false);
-      }
-    }
-    if (tex_live) tex_vertex(tvs, v.pos, v.normal, v.tex, v.fog, p.attr);
-    p.edgeflag = v.edge;
-    p.point_size = 1.0f;
-    if (attenuate) {
-      const float ez = mv[0][2] * x + mv[1][2] * y + mv[2][2] * z + mv[3][2] * w;
-      const float d = ez < 0.0f ? -ez : ez;
-      const float* a = modes.point_attenuation;
-      const float size = modes.point_size / std::sqrt(a[0] + a[1] * d + a[2] * d * d);
-      // A NaN (attenuation <= 0) becomes the minimum.
-      p.point_size = size >= modes.point_size_min
-                         ? (size < modes.point_size_max ? size : modes.point_size_max)
-                         : modes.point_size_min;
-    }
-  }
+  job.modes = &rs.modes;
+  job.mv = &ctx->modelview.top();
+  const bool extra = job.tex_live || rs.modes.point_attenuated;
+  if (lit)
+    extra ? transform_vertices<true, true>(job) : transform_vertices<true, false>(job);
+  else
+    extra ? transform_vertices<false, true>(job) : transform_vertices<false, false>(job);
 
   // GL 2.1 §5.2, §5.3: in SELECT and FEEDBACK mode the primitives go to selection or
   // feedback instead of the rasterizer.
@@ -126,12 +195,23 @@ void draw_vertices_once(Context* ctx, GLenum mode, const InputVertex* in, size_t
   DrawCall dc;
   dc.state = &rs;
   dc.fb = &fb;
+  dc.frag = &cache.frag;
   if (rs.count_samples) dc.samples_passed = &ctx->queries.samples_passed;
   dc.workers = &ctx->workers;
   draw_primitives(dc, mode, out.data(), indices, count);
 }
 
 } // namespace
+
+uint32_t input_tex_units(Context* ctx) {
+  validate_state(ctx);
+  const TexVertexSetup& tvs = ctx->texpipe.vertex;
+  // As draw_vertices_once decides which units tex_vertex reads.
+  uint32_t units = ctx->raster.shade != nullptr ? tvs.units : 0;
+  // Feedback of the COLOR_TEXTURE types reports unit 0's coordinates (GL 2.1 §5.3).
+  if (!render_mode_is_render(ctx)) units |= 1u;
+  return units;
+}
 
 // GL 2.1 §4.2.1: with FRONT_AND_BACK the primitives reach both colour buffers.
 void draw_vertices(Context* ctx, GLenum mode, const InputVertex* in, size_t n,

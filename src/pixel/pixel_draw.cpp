@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "fragment/fragment_ops.h"
+#include "fragment/shade.h"
 
 namespace pineda {
 
@@ -39,14 +40,16 @@ void group_spans(int count, int64_t first, float origin, float zoom, std::vector
 }
 
 // Runs the fragments of the window rectangle [x0, x1) x [y0, y1), clipped to the framebuffer
-// and scissor box, through the constant-colour block loop.
+// and scissor box, through the constant-colour block loop, or the per-fragment one when
+// in.shade is set.
 void emit_rect(const FragCtx& fc, FragInputs& in, int x0, int y0, int x1, int y1) {
   x0 = std::max(x0, fc.clip_x0);
   y0 = std::max(y0, fc.clip_y0);
   x1 = std::min(x1, fc.clip_x1 + 1);
   y1 = std::min(y1, fc.clip_y1 + 1);
   if (x0 >= x1 || y0 >= y1) return;
-  const BlockFn fn = fc.fn[static_cast<int>(ShadePath::Const)];
+  const BlockFn fn =
+      fc.fn[static_cast<int>(in.shade != nullptr ? ShadePath::PerFragment : ShadePath::Const)];
   for (int by = y0 & ~(kBlockSize - 1); by < y1; by += kBlockSize) {
     for (int bx = x0 & ~(kBlockSize - 1); bx < x1; bx += kBlockSize) {
       const uint64_t mask = rect_block_mask(x0, y0, x1 - 1, y1 - 1, bx, by);
@@ -58,13 +61,31 @@ void emit_rect(const FragCtx& fc, FragInputs& in, int x0, int y0, int x1, int y1
   }
 }
 
-// True when a fragment's only effect is to store its colour in every channel: no depth or
-// stencil test, no alpha test, blending or logic op, full colour mask. Such runs are written
-// straight into the colour buffer.
+// True when a fragment's only effect is to store its colour in every channel: no texturing
+// or fog, no depth or stencil test, no alpha test, blending or logic op, full colour mask.
+// Such runs are written straight into the colour buffer.
 bool plain_store(const FragCtx& fc) {
   const StateKey& k = fc.key;
-  return !k.depth_test && !k.ext() && k.blend_path() == BlendPath::Off &&
+  return fc.shade == nullptr && !k.depth_test && !k.ext() && k.blend_path() == BlendPath::Off &&
          k.color_path() == ColorPath::All;
+}
+
+// The per-fragment inputs of pixel fragments (§3.6.4 "Conversion to Fragments", §3.7): every
+// value constant, the texture coordinates and fog distance those of the raster position. The
+// caller sets the colours.
+void raster_shade_inputs(const ShadeSetup& ss, const RasterPos& rp, ShadeInputs& si) {
+  si.inv_w = PlaneF{1.0f, 0.0f, 0.0f};
+  for (int k = 0; k < ss.unit_count; ++k) {
+    const int u = ss.unit[k].index;
+    for (int c = 0; c < 4; ++c)
+      si.tex_w[u][c] = PlaneF{rp.tex[u][c], 0.0f, 0.0f};
+  }
+  si.fog_w = PlaneF{rp.distance, 0.0f, 0.0f};
+  si.const_colors = true;
+  for (int c = 0; c < 4; ++c)
+    si.color[c] = 0.0f;
+  for (int c = 0; c < 3; ++c)
+    si.color2[c] = 0.0f;
 }
 
 // Stores `rgba` into the colour buffer over [x0, x1) x [y0, y1), clipped like emit_rect.
@@ -140,25 +161,32 @@ void set_color(FragInputs& in, const float* rgba) {
 
 } // namespace
 
-void draw_pixel_rect(const RasterState& rs, const Framebuffer& fb, const PixelRect& r) {
+uint64_t draw_pixel_rect(const RasterState& rs, const Framebuffer& fb, const PixelRect& r) {
   const PixelPlacement& p = r.place;
-  if (p.w <= 0 || p.h <= 0 || (r.rgba == nullptr) == (r.depth == nullptr)) return;
+  if (p.w <= 0 || p.h <= 0 || (r.rgba == nullptr) == (r.depth == nullptr)) return 0;
   // A raster position given as NaN or infinity (glWindowPos accepts any value) covers no pixel.
-  if (!std::isfinite(p.x) || !std::isfinite(p.y)) return;
+  if (!std::isfinite(p.x) || !std::isfinite(p.y)) return 0;
   FragCtx fc;
   prepare_fragments(rs, fb, fc);
-  if (fc.noop) return;
+  if (fc.noop) return 0;
   std::vector<int> col_lo, col_hi, row_lo, row_hi;
   group_spans(p.w, p.col0, p.x, p.zoom_x, col_lo, col_hi);
   group_spans(p.h, p.row0, p.y, p.zoom_y, row_lo, row_hi);
 
   const bool direct = plain_store(fc);
   if (direct && r.rgba != nullptr && r.present == nullptr && p.zoom_x == 1.0f && p.zoom_y == 1.0f) {
-    // Zoom 1: group (n, m) is the single pixel (col_lo[0] + n, row_lo[0] + m).
-    return store_unzoomed(fc, fb, r.rgba, p.w, p.h, col_lo[0], row_lo[0]);
+    // Zoom 1: group (n, m) is the single pixel (col_lo[0] + n, row_lo[0] + m). No query
+    // counts: a plain store has no extended state (StateKey::ext).
+    store_unzoomed(fc, fb, r.rgba, p.w, p.h, col_lo[0], row_lo[0]);
+    return 0;
   }
   FragInputs in;
   if (r.rgba == nullptr) set_color(in, r.color);
+  ShadeInputs si;
+  if (fc.shade != nullptr && r.raster != nullptr) {
+    raster_shade_inputs(*fc.shade, *r.raster, si);
+    in.shade = &si;
+  }
   const double fixed_z = clamp01(r.z) * fc.depth_max;
   in.z.v0 = fixed_z;
   for (int m = 0; m < p.h; ++m) {
@@ -175,6 +203,8 @@ void draw_pixel_rect(const RasterState& rs, const Framebuffer& fb, const PixelRe
       run = false;
       if (direct) return store_rect(fc, fb, run_color, run_x0, y0, run_x1, y1);
       std::memcpy(in.const_color, run_color, 4);
+      for (int c = 0; c < 4; ++c)
+        si.color[c] = static_cast<float>(run_color[c]) * (1.0f / 255.0f);
       in.z.v0 = run_z;
       emit_rect(fc, in, run_x0, y0, run_x1, y1);
     };
@@ -213,6 +243,7 @@ void draw_pixel_rect(const RasterState& rs, const Framebuffer& fb, const PixelRe
     }
     flush();
   }
+  return fc.samples_passed;
 }
 
 void draw_stencil_rect(const RasterState& rs, const Framebuffer& fb, const PixelPlacement& p,
@@ -249,20 +280,31 @@ void draw_stencil_rect(const RasterState& rs, const Framebuffer& fb, const Pixel
   }
 }
 
-void draw_bitmap(const RasterState& rs, const Framebuffer& fb, int x, int y, int w, int h,
-                 const uint8_t* bits, const float color[4], float z) {
-  if (w <= 0 || h <= 0) return;
+uint64_t draw_bitmap(const RasterState& rs, const Framebuffer& fb, int x, int y, int w, int h,
+                     const uint8_t* bits, const float color[4], float z, const RasterPos& raster) {
+  if (w <= 0 || h <= 0) return 0;
   FragCtx fc;
   prepare_fragments(rs, fb, fc);
-  if (fc.noop) return;
+  if (fc.noop) return 0;
   const int64_t x0 = std::max<int64_t>(x, fc.clip_x0), y0 = std::max<int64_t>(y, fc.clip_y0);
   const int64_t x1 = std::min<int64_t>(int64_t{x} + w, int64_t{fc.clip_x1} + 1);
   const int64_t y1 = std::min<int64_t>(int64_t{y} + h, int64_t{fc.clip_y1} + 1);
-  if (x0 >= x1 || y0 >= y1) return;
+  if (x0 >= x1 || y0 >= y1) return 0;
   FragInputs in;
   set_color(in, color);
   in.z.v0 = clamp01(z) * fc.depth_max;
-  const BlockFn fn = fc.fn[static_cast<int>(ShadePath::Const)];
+  ShadeInputs si;
+  ShadePath path = ShadePath::Const;
+  if (fc.shade != nullptr) {
+    raster_shade_inputs(*fc.shade, raster, si);
+    for (int c = 0; c < 4; ++c)
+      si.color[c] = clamp01(color[c]);
+    for (int c = 0; c < 3; ++c)
+      si.color2[c] = fc.shade->color_sum ? clamp01(raster.color2[c]) : 0.0f;
+    in.shade = &si;
+    path = ShadePath::PerFragment;
+  }
+  const BlockFn fn = fc.fn[static_cast<int>(path)];
   // One block loop call per 8x8 block, its coverage gathered from the bits.
   for (int by = static_cast<int>(y0) & ~(kBlockSize - 1); by < y1; by += kBlockSize) {
     for (int bx = static_cast<int>(x0) & ~(kBlockSize - 1); bx < x1; bx += kBlockSize) {
@@ -282,6 +324,7 @@ void draw_bitmap(const RasterState& rs, const Framebuffer& fb, int x, int y, int
       fn(fc, in, bx, by, mask);
     }
   }
+  return fc.samples_passed;
 }
 
 } // namespace pineda

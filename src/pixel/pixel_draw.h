@@ -7,6 +7,7 @@
 #include <cstdint>
 
 #include "framebuffer/framebuffer.h"
+#include "pixel/raster_pos.h"
 #include "raster/raster.h"
 
 namespace pineda {
@@ -33,11 +34,18 @@ struct PixelRect {
   const uint8_t* present = nullptr;
   float color[4] = {0, 0, 0, 0};
   float z = 0.0f;
+  // While texturing or fog is on (RasterState::shade), the fragments take the texture
+  // coordinates and fog distance of this raster position (§3.6.4 "Conversion to Fragments")
+  // and go through texturing and fog like a primitive's (§3.8, §3.10); no colour sum, as in
+  // llvmpipe. Null: no shading.
+  const RasterPos* raster = nullptr;
 };
 
 // Colour values are clamped to [0, 1] and depth values too before they become fragments
-// (§3.6.4 "Final Conversion").
-void draw_pixel_rect(const RasterState& rs, const Framebuffer& fb, const PixelRect& r);
+// (§3.6.4 "Final Conversion"). Returns the fragments that passed the depth and stencil
+// tests when rs.count_samples is set (occlusion queries count pixel fragments too, GL 2.1
+// §4.1.7), else 0.
+uint64_t draw_pixel_rect(const RasterState& rs, const Framebuffer& fb, const PixelRect& r);
 
 // §4.3.1: stencil indices written with only the pixel ownership and scissor tests and the
 // stencil write mask; indices are masked to the buffer's 8 bits.
@@ -45,8 +53,10 @@ void draw_stencil_rect(const RasterState& rs, const Framebuffer& fb, const Pixel
                        const uint32_t* index, const uint8_t* present);
 
 // §3.7: fragments where bits[j * w + i] is non-zero, lower left corner at (x, y), all with
-// the raster position's colour and window z.
-void draw_bitmap(const RasterState& rs, const Framebuffer& fb, int x, int y, int w, int h,
-                 const uint8_t* bits, const float color[4], float z);
+// the raster position's colour and window z. While texturing or fog is on they are shaded
+// with `raster`'s texture coordinates, secondary colour (colour sum) and fog distance, as
+// PixelRect::raster says. Returns the samples passed, as draw_pixel_rect.
+uint64_t draw_bitmap(const RasterState& rs, const Framebuffer& fb, int x, int y, int w, int h,
+                     const uint8_t* bits, const float color[4], float z, const RasterPos& raster);
 
 } // namespace pineda

@@ -18,7 +18,8 @@ namespace pineda {
 
 // GL 2.1 §3.6.4 for unpacking commands: GL_NO_ERROR, GL_INVALID_ENUM (unknown format or type;
 // BITMAP with a format other than COLOR_INDEX or STENCIL_INDEX, as §3.6.4 and Mesa say) or
-// GL_INVALID_OPERATION (a packed type with a format it does not fit, Table 3.8).
+// GL_INVALID_OPERATION (a packed type with a format it does not fit, Table 3.8, checked
+// before the format itself as Mesa does).
 GLenum check_pixel_format_type(GLenum format, GLenum type);
 
 // `st` without the 3D-only parameters, for 1D and 2D images.

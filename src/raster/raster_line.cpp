@@ -116,11 +116,15 @@ void line(const DrawCall& dc, const FragCtx& ctx, const PVertex& a, const PVerte
   const int64_t xa = to_fixed(a.win[0]), ya = to_fixed(a.win[1]);
   const int64_t xb = to_fixed(b.win[0]), yb = to_fixed(b.win[1]);
   const int64_t dx = xb - xa, dy = yb - ya;
-  // The counter advances by the segment's major-axis length even when nothing is drawn.
+  // The counter advances by the segment's major-axis length even when nothing is drawn. The
+  // length is taken from the snapped positions: a segment between pixel centres is a whole
+  // number of pixels long even when rounding in the transforms left it a few ulps longer
+  // (piglit linestipple: 32.000004 would advance the counter by 33).
   float* counter = dc.stipple_counter;
-  const float seg_len = std::max(std::fabs(b.win[0] - a.win[0]), std::fabs(b.win[1] - a.win[1]));
+  const int64_t seg_sub = std::max(std::llabs(dx), std::llabs(dy));
+  const int64_t seg_len = (seg_sub + kSubpixelOne - 1) / kSubpixelOne;
   const int64_t stipple_base = (stipple && counter != nullptr) ? static_cast<int64_t>(*counter) : 0;
-  if (stipple && counter != nullptr) *counter += std::ceil(seg_len);
+  if (stipple && counter != nullptr) *counter += static_cast<float>(seg_len);
   if (dx == 0 && dy == 0) return; // the end point lies in every diamond the start point does
   // Another worker draws the whole line (its fragments lie within width + 1 rows of the
   // segment's rows): skip its setup.

@@ -17,8 +17,12 @@ namespace pineda {
 namespace {
 
 // Floor and ceiling of a / b for b > 0.
-inline int64_t floor_div(int64_t a, int64_t b) { return a >= 0 ? a / b : -((-a + b - 1) / b); }
-inline int64_t ceil_div(int64_t a, int64_t b) { return -floor_div(-a, b); }
+inline int64_t floor_div(int64_t a, int64_t b) {
+  return a >= 0 ? a / b : -((-a + b - 1) / b);
+}
+inline int64_t ceil_div(int64_t a, int64_t b) {
+  return -floor_div(-a, b);
+}
 
 // Per-pixel coverage of one block within the pixel bounds [c0,c1]x[r0,r1] of the block,
 // in exact 64-bit arithmetic.
@@ -43,8 +47,8 @@ inline uint64_t partial_mask64(const TriEdges& te, const int64_t e[3], int c0, i
 // The same four lanes at a time in 32 bits, for blocks where every edge value fits: the
 // edge functions of a block on an edge are bounded by |E(corner)| + 7 (|sx| + |sy|).
 struct Edges32 {
-  bool usable = false;     // the steps themselves are small enough
-  int64_t limit[3] = {};   // |E(block corner)| must stay below this
+  bool usable = false;          // the steps themselves are small enough
+  int64_t limit[3] = {};        // |E(block corner)| must stay below this
   i32x4 lane_lo[3], lane_hi[3]; // column offsets 0..3 and 4..7 times sx
   int32_t sy[3] = {};
 };
@@ -71,7 +75,8 @@ inline Edges32 make_edges32(const TriEdges& te) {
 
 inline uint64_t partial_mask32(const Edges32& v, const int64_t e[3]) {
   i32x4 row[3];
-  for (int i = 0; i < 3; ++i) row[i] = i32x4{} + static_cast<int32_t>(e[i]);
+  for (int i = 0; i < 3; ++i)
+    row[i] = i32x4{} + static_cast<int32_t>(e[i]);
   const i32x4 zero = {};
   uint64_t mask = 0;
   for (int r = 0; r < kBlockSize; ++r) {
@@ -79,7 +84,8 @@ inline uint64_t partial_mask32(const Edges32& v, const int64_t e[3]) {
     const i32x4 hi = (row[0] + v.lane_hi[0]) | (row[1] + v.lane_hi[1]) | (row[2] + v.lane_hi[2]);
     mask |= static_cast<uint64_t>(lane_bits(lo >= zero, hi >= zero)) << (8 * r);
     if (r + 1 < kBlockSize) // stay within the bound: no step past the last row
-      for (int i = 0; i < 3; ++i) row[i] += v.sy[i];
+      for (int i = 0; i < 3; ++i)
+        row[i] += v.sy[i];
   }
   return mask;
 }
@@ -98,8 +104,9 @@ inline uint64_t stipple_block_mask(const uint32_t* rows, int bx, int by) {
   return m;
 }
 
-// `stipple`: the polygon stipple rows, or nullptr when stippling is off (one test per block).
-// Only the block rows of `bands` are visited.
+// `stipple`: the polygon stipple rows (kStipple), unused otherwise: the unstippled instance
+// carries no trace of stippling in its loops. Only the block rows of `bands` are visited.
+template <bool kStipple>
 void traverse(const TriEdges& te, const FragCtx& ctx, const FragInputs& in, BlockFn fn,
               const uint32_t* stipple, const Bands& bands) {
   constexpr int B = kBlockSize;
@@ -138,29 +145,30 @@ void traverse(const TriEdges& te, const FragCtx& ctx, const FragInputs& in, Bloc
     const int bx0 = static_cast<int>(lo), bx1 = static_cast<int>(hi);
     const int r0 = std::max(te.miny - by, 0), r1 = std::min(te.maxy - by, B - 1);
     int64_t e[3];
-    for (int i = 0; i < 3; ++i) e[i] = erow[i] + bx0 * te.e[i].sx;
+    for (int i = 0; i < 3; ++i)
+      e[i] = erow[i] + bx0 * te.e[i].sx;
     for (int bx = bx0; bx <= bx1; bx += B) {
-      const bool out = (e[0] + reject_off[0] < 0) | (e[1] + reject_off[1] < 0) |
-                       (e[2] + reject_off[2] < 0);
+      const bool out =
+          (e[0] + reject_off[0] < 0) | (e[1] + reject_off[1] < 0) | (e[2] + reject_off[2] < 0);
       if (!out) {
         uint64_t mask;
-        if (e[0] + accept_off[0] >= 0 && e[1] + accept_off[1] >= 0 &&
-            e[2] + accept_off[2] >= 0) {
+        if (e[0] + accept_off[0] >= 0 && e[1] + accept_off[1] >= 0 && e[2] + accept_off[2] >= 0) {
           // Every centre of the block is inside; only the bounding box (which is clipped to
           // the clip rectangle) limits it.
           mask = rect_block_mask(te.minx, te.miny, te.maxx, te.maxy, bx, by);
-        } else if (e32.usable && std::abs(e[0]) < e32.limit[0] &&
-                   std::abs(e[1]) < e32.limit[1] && std::abs(e[2]) < e32.limit[2]) {
-          mask = partial_mask32(e32, e) &
-                 rect_block_mask(te.minx, te.miny, te.maxx, te.maxy, bx, by);
+        } else if (e32.usable && std::abs(e[0]) < e32.limit[0] && std::abs(e[1]) < e32.limit[1] &&
+                   std::abs(e[2]) < e32.limit[2]) {
+          mask =
+              partial_mask32(e32, e) & rect_block_mask(te.minx, te.miny, te.maxx, te.maxy, bx, by);
         } else {
           const int c0 = std::max(te.minx - bx, 0), c1 = std::min(te.maxx - bx, B - 1);
           mask = partial_mask64(te, e, c0, c1, r0, r1);
         }
-        if (stipple != nullptr) mask &= stipple_block_mask(stipple, bx, by);
+        if constexpr (kStipple) mask &= stipple_block_mask(stipple, bx, by);
         if (mask != 0) fn(ctx, in, bx, by, mask);
       }
-      for (int i = 0; i < 3; ++i) e[i] += te.e[i].sx * B;
+      for (int i = 0; i < 3; ++i)
+        e[i] += te.e[i].sx * B;
     }
   }
 }
@@ -185,19 +193,24 @@ void triangle(const DrawCall& dc, const FragCtx& ctx, const PVertex& a, const PV
   const int slot = (rs.two_sided && back_facing) ? kAttrBackColor : kAttrColor;
   FragInputs in;
   const PlaneSetup ps = make_plane_setup(t);
-  ShadePath shade = setup_triangle_inputs(ctx, ps, a, b, c, provoking, rs.flat, slot, in);
-  ShadeInputs si; // texturing and fog (fragment/shade.h)
-  if (ctx.shade != nullptr) {
-    setup_shade_triangle(*ctx.shade, ps, a, b, c, provoking, rs.flat, slot, si);
-    in.shade = &si;
-    shade = ShadePath::PerFragment;
-  }
+  const ShadePath shade = setup_triangle_inputs(ctx, ps, a, b, c, provoking, rs.flat, slot, in);
   const RasterModes& modes = rs.modes;
   // GL 2.1 §3.5.5: the offset moves the whole depth plane (the fragment stage clamps).
   if (modes.offset_fill && ctx.needs_depth)
     in.z.v0 += polygon_offset_depth(modes, in.z.dx, in.z.dy, ctx.depth_max);
-  traverse(te, ctx, in, ctx.fn[static_cast<int>(shade)],
-           modes.polygon_stipple ? modes.polygon_stipple_rows : nullptr, dc.bands);
+  const auto run = [&](ShadePath path) {
+    const BlockFn fn = ctx.fn[static_cast<int>(path)];
+    if (modes.polygon_stipple)
+      traverse<true>(te, ctx, in, fn, modes.polygon_stipple_rows, dc.bands);
+    else
+      traverse<false>(te, ctx, in, fn, nullptr, dc.bands);
+  };
+  if (ctx.shade == nullptr) return run(shade);
+  // Texturing and fog (fragment/shade.h): their planes exist only for the draws that use them.
+  ShadeInputs si;
+  setup_shade_triangle(*ctx.shade, ps, a, b, c, provoking, rs.flat, slot, si);
+  in.shade = &si;
+  run(ShadePath::PerFragment);
 }
 
 } // namespace

@@ -14,6 +14,7 @@
 // (misc_save_attrib / misc_restore_attrib); EVAL_BIT and the evaluator enables by eval.cpp.
 #include "core/api_util.h"
 #include "dispatch.h"
+#include "state/attrib.h"
 #include "state/draw_read_buffer.h"
 #include "state/raster_modes_hooks.h"
 
@@ -281,6 +282,7 @@ uint32_t restore(Context* c, const AttribFrame& f) {
     c->hint_fog = f.hints.fog;
     c->hint_generate_mipmap = f.hints.generate_mipmap;
     c->hint_texture_compression = f.hints.texture_compression;
+    dirty |= kDirtyFog; // the fog hint picks per-vertex or per-fragment fog
   }
   if (m & GL_FOG_BIT) {
     c->lighting.color_sum = f.color_sum;
@@ -320,6 +322,17 @@ uint32_t restore(Context* c, const AttribFrame& f) {
 }
 
 } // namespace
+
+void copy_attrib_groups(const Context* src, Context* dst, GLbitfield mask) {
+  AttribFrame f;
+  f.mask = mask;
+  save(src, f);
+  // GLX 1.4 §3.3.7: "texture objects cannot be copied"; across share groups a name means
+  // another object, so dst's own bindings and parameters are what it keeps.
+  if ((mask & GL_TEXTURE_BIT) && src->shared != dst->shared)
+    save_texture_attrib(dst, f.texture_objects);
+  mark_dirty(dst, restore(dst, f));
+}
 
 namespace exec {
 

@@ -16,13 +16,21 @@ inline void vertex(float x, float y, float z, float w) {
   if (ctx == nullptr || ctx->begin_mode == kOutsideBeginEnd) return;
   InputVertex& v = ctx->imm.emplace_back();
   v.pos[0] = x, v.pos[1] = y, v.pos[2] = z, v.pos[3] = w;
-  for (int i = 0; i < 4; ++i) v.color[i] = ctx->cur_color[i];
-  for (int i = 0; i < 3; ++i) v.normal[i] = ctx->cur_normal[i];
-  for (int u = 0; u < kMaxTexUnits; ++u)
-    for (int i = 0; i < 4; ++i) v.tex[u][i] = ctx->cur_tex[u][i];
-  for (int i = 0; i < 3; ++i) v.color2[i] = ctx->cur_color2[i];
+  for (int i = 0; i < 4; ++i)
+    v.color[i] = ctx->cur_color[i];
+  for (int i = 0; i < 3; ++i)
+    v.normal[i] = ctx->cur_normal[i];
+  for (int i = 0; i < 3; ++i)
+    v.color2[i] = ctx->cur_color2[i];
   v.fog = ctx->texpipe.cur_fog_coord;
   v.edge = ctx->cur_edge ? 1u : 0u;
+  // Only the units this primitive's draw reads (usually none): the rest of the vertex's
+  // second cache line is never touched.
+  for (uint32_t units = ctx->imm_tex_units; units != 0; units &= units - 1) {
+    const int u = __builtin_ctz(units);
+    for (int i = 0; i < 4; ++i)
+      v.tex[u][i] = ctx->cur_tex[u][i];
+  }
 }
 
 inline void color(float r, float g, float b, float a) {
@@ -86,6 +94,9 @@ void GLAPIENTRY Begin(GLenum mode) {
   }
   ctx->begin_mode = mode;
   ctx->imm.clear();
+  // GL 2.1 §2.6.3: no command between Begin and End changes what the draw at End reads from
+  // the texture coordinates, so the set of units it reads is fixed here.
+  ctx->imm_tex_units = input_tex_units(ctx);
 }
 
 void GLAPIENTRY End() {
@@ -106,8 +117,12 @@ void GLAPIENTRY End() {
 // Each macro line spells out one family of GL 1.0 attribute commands; they differ only in
 // the component type and count.
 #define PINEDA_VERTEX(T, S)                                                                        \
-  void GLAPIENTRY Vertex2##S(T x, T y) { vertex(float(x), float(y), 0.0f, 1.0f); }                 \
-  void GLAPIENTRY Vertex3##S(T x, T y, T z) { vertex(float(x), float(y), float(z), 1.0f); }        \
+  void GLAPIENTRY Vertex2##S(T x, T y) {                                                           \
+    vertex(float(x), float(y), 0.0f, 1.0f);                                                        \
+  }                                                                                                \
+  void GLAPIENTRY Vertex3##S(T x, T y, T z) {                                                      \
+    vertex(float(x), float(y), float(z), 1.0f);                                                    \
+  }                                                                                                \
   void GLAPIENTRY Vertex4##S(T x, T y, T z, T w) {                                                 \
     vertex(float(x), float(y), float(z), float(w));                                                \
   }                                                                                                \
@@ -127,8 +142,12 @@ PINEDA_VERTEX(GLdouble, d)
 #undef PINEDA_VERTEX
 
 #define PINEDA_COLOR(T, S)                                                                         \
-  void GLAPIENTRY Color3##S(T r, T g, T b) { color(norm(r), norm(g), norm(b), 1.0f); }             \
-  void GLAPIENTRY Color4##S(T r, T g, T b, T a) { color(norm(r), norm(g), norm(b), norm(a)); }     \
+  void GLAPIENTRY Color3##S(T r, T g, T b) {                                                       \
+    color(norm(r), norm(g), norm(b), 1.0f);                                                        \
+  }                                                                                                \
+  void GLAPIENTRY Color4##S(T r, T g, T b, T a) {                                                  \
+    color(norm(r), norm(g), norm(b), norm(a));                                                     \
+  }                                                                                                \
   void GLAPIENTRY Color3##S##v(const T* v) {                                                       \
     if (v) color(norm(v[0]), norm(v[1]), norm(v[2]), 1.0f);                                        \
   }                                                                                                \
@@ -163,7 +182,9 @@ PINEDA_SECONDARY_COLOR(GLuint, ui)
 #undef PINEDA_SECONDARY_COLOR
 
 #define PINEDA_NORMAL(T, S)                                                                        \
-  void GLAPIENTRY Normal3##S(T x, T y, T z) { normal(norm(x), norm(y), norm(z)); }                 \
+  void GLAPIENTRY Normal3##S(T x, T y, T z) {                                                      \
+    normal(norm(x), norm(y), norm(z));                                                             \
+  }                                                                                                \
   void GLAPIENTRY Normal3##S##v(const T* v) {                                                      \
     if (v) normal(norm(v[0]), norm(v[1]), norm(v[2]));                                             \
   }
@@ -176,9 +197,15 @@ PINEDA_NORMAL(GLdouble, d)
 
 // Texture coordinates are not normalized (GL 2.1 §2.7): integers convert directly.
 #define PINEDA_TEXCOORD(T, S)                                                                      \
-  void GLAPIENTRY TexCoord1##S(T s) { texcoord(float(s), 0.0f, 0.0f, 1.0f); }                      \
-  void GLAPIENTRY TexCoord2##S(T s, T t) { texcoord(float(s), float(t), 0.0f, 1.0f); }             \
-  void GLAPIENTRY TexCoord3##S(T s, T t, T r) { texcoord(float(s), float(t), float(r), 1.0f); }    \
+  void GLAPIENTRY TexCoord1##S(T s) {                                                              \
+    texcoord(float(s), 0.0f, 0.0f, 1.0f);                                                          \
+  }                                                                                                \
+  void GLAPIENTRY TexCoord2##S(T s, T t) {                                                         \
+    texcoord(float(s), float(t), 0.0f, 1.0f);                                                      \
+  }                                                                                                \
+  void GLAPIENTRY TexCoord3##S(T s, T t, T r) {                                                    \
+    texcoord(float(s), float(t), float(r), 1.0f);                                                  \
+  }                                                                                                \
   void GLAPIENTRY TexCoord4##S(T s, T t, T r, T q) {                                               \
     texcoord(float(s), float(t), float(r), float(q));                                              \
   }                                                                                                \
@@ -201,7 +228,9 @@ PINEDA_TEXCOORD(GLdouble, d)
 #undef PINEDA_TEXCOORD
 
 #define PINEDA_RECT(T, S)                                                                          \
-  void GLAPIENTRY Rect##S(T x1, T y1, T x2, T y2) { rect(x1, y1, x2, y2); }                        \
+  void GLAPIENTRY Rect##S(T x1, T y1, T x2, T y2) {                                                \
+    rect(x1, y1, x2, y2);                                                                          \
+  }                                                                                                \
   void GLAPIENTRY Rect##S##v(const T* a, const T* b) {                                             \
     if (a && b) rect(a[0], a[1], b[0], b[1]);                                                      \
   }

@@ -1,11 +1,24 @@
 // Blending state (GL 2.1 §4.1.8; BlendFuncSeparate, BlendColor and BlendEquation are core
-// since GL 1.4).
+// since GL 1.4, BlendEquationSeparate since GL 2.0 and EXT_blend_equation_separate).
 #include "core/api_util.h"
 #include "dispatch.h"
 
 namespace pineda {
 
 namespace {
+
+bool valid_equation(GLenum mode) {
+  switch (mode) {
+  case GL_FUNC_ADD:
+  case GL_FUNC_SUBTRACT:
+  case GL_FUNC_REVERSE_SUBTRACT:
+  case GL_MIN:
+  case GL_MAX:
+    return true;
+  default:
+    return false;
+  }
+}
 
 bool valid_factor(GLenum f, bool is_src) {
   switch (f) {
@@ -57,18 +70,20 @@ void GLAPIENTRY BlendFuncSeparate(GLenum src_rgb, GLenum dst_rgb, GLenum src_a, 
 
 void GLAPIENTRY BlendEquation(GLenum mode) {
   PINEDA_CTX_OUTSIDE("glBlendEquation");
-  switch (mode) {
-  case GL_FUNC_ADD:
-  case GL_FUNC_SUBTRACT:
-  case GL_FUNC_REVERSE_SUBTRACT:
-  case GL_MIN:
-  case GL_MAX:
-    break;
-  default:
-    record_error(ctx, GL_INVALID_ENUM, "glBlendEquation", mode);
-    return;
-  }
+  if (!valid_equation(mode)) return record_error(ctx, GL_INVALID_ENUM, "glBlendEquation", mode);
   ctx->blend_eq_rgb = ctx->blend_eq_a = mode;
+  mark_dirty(ctx, kDirtyFragment);
+}
+
+// GL 2.1 §4.1.8 (EXT_blend_equation_separate): one equation for RGB, one for alpha.
+void GLAPIENTRY BlendEquationSeparate(GLenum mode_rgb, GLenum mode_alpha) {
+  PINEDA_CTX_OUTSIDE("glBlendEquationSeparate");
+  if (!valid_equation(mode_rgb))
+    return record_error(ctx, GL_INVALID_ENUM, "glBlendEquationSeparate", mode_rgb);
+  if (!valid_equation(mode_alpha))
+    return record_error(ctx, GL_INVALID_ENUM, "glBlendEquationSeparate", mode_alpha);
+  ctx->blend_eq_rgb = mode_rgb;
+  ctx->blend_eq_a = mode_alpha;
   mark_dirty(ctx, kDirtyFragment);
 }
 

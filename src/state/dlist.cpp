@@ -166,6 +166,7 @@ void replay_block(const void* args) {
     if (ctx->begin_mode != kOutsideBeginEnd)
       return record_error(ctx, GL_INVALID_OPERATION,
                           b->indices.empty() ? "glDrawArrays" : "glDrawElements");
+    if (b->verts.empty()) return;
     return draw_block(ctx, *b);
   }
   // §2.6.3: Rect between Begin and End is INVALID_OPERATION and draws nothing.

@@ -127,10 +127,14 @@ bool arrays_mapped(Context* ctx, bool with_elements) {
 }
 
 // Elements [first, first + count) of the enabled arrays, compiled (§5.4: dereferenced now).
+// A draw that yields no vertex (no vertex array, nothing in range) still compiles an empty
+// array block: executed between Begin and End it is INVALID_OPERATION all the same (§2.6.3).
 void compile_range(Context* ctx, GLenum mode, size_t first, size_t count) {
-  if (count == 0 || !ctx->arrays.vertex.enabled || !arrays_hold(ctx, first + count - 1)) return;
-  std::vector<InputVertex> verts(count);
-  if (!fetch_range(ctx, first, count, verts.data())) return;
+  std::vector<InputVertex> verts;
+  if (count != 0 && ctx->arrays.vertex.enabled && arrays_hold(ctx, first + count - 1)) {
+    verts.resize(count);
+    if (!fetch_range(ctx, first, count, verts.data())) verts.clear();
+  }
   compile_array_block(ctx, mode, std::move(verts), {});
 }
 
@@ -168,23 +172,24 @@ bool read_indices(Context* ctx, GLsizei count, GLenum type, const void* indices,
 // The elements a DrawElements call names, compiled: the range they span when it is compact
 // (the block keeps the indices, so shared vertices are transformed once), else one vertex per
 // index.
+// As compile_range, a draw that yields no vertex compiles an empty array block.
 void compile_elements(Context* ctx, GLenum mode, GLsizei count, GLenum type, const void* indices) {
-  if (count == 0 || !ctx->arrays.vertex.enabled) return;
   std::vector<uint32_t> idx;
-  if (!read_indices(ctx, count, type, indices, idx)) return;
+  if (count == 0 || !ctx->arrays.vertex.enabled || !read_indices(ctx, count, type, indices, idx))
+    return compile_array_block(ctx, mode, {}, {});
   const auto [lo_it, hi_it] = std::minmax_element(idx.begin(), idx.end());
   const uint32_t lo = *lo_it, hi = *hi_it;
-  if (!arrays_hold(ctx, hi)) return;
+  if (!arrays_hold(ctx, hi)) return compile_array_block(ctx, mode, {}, {});
   const size_t span = static_cast<size_t>(hi) - lo + 1;
   if (span <= 4 * idx.size() + 1024) {
     std::vector<InputVertex> verts(span);
-    if (!fetch_range(ctx, lo, span, verts.data())) return;
+    if (!fetch_range(ctx, lo, span, verts.data())) return compile_array_block(ctx, mode, {}, {});
     for (uint32_t& i : idx)
       i -= lo;
     compile_array_block(ctx, mode, std::move(verts), std::move(idx));
   } else {
     std::vector<InputVertex> verts(idx.size());
-    if (!fetch_list(ctx, idx.data(), idx.size(), verts.data())) return;
+    if (!fetch_list(ctx, idx.data(), idx.size(), verts.data())) verts.clear();
     compile_array_block(ctx, mode, std::move(verts), {});
   }
 }

@@ -64,7 +64,9 @@ void draw_color_strip(Context* ctx, const PixelPlacement& p, const float* rgba) 
   r.place = p;
   r.rgba = rgba;
   r.z = ctx->raster_pos.win[2];
-  for_each_draw_buffer(ctx, [&] { draw_pixel_rect(ctx->raster, ctx->fb, r); });
+  r.raster = &ctx->raster_pos;
+  for_each_draw_buffer(
+      ctx, [&] { ctx->queries.samples_passed += draw_pixel_rect(ctx->raster, ctx->fb, r); });
 }
 
 void draw_depth_strip(Context* ctx, const PixelPlacement& p, const float* depth) {
@@ -72,7 +74,9 @@ void draw_depth_strip(Context* ctx, const PixelPlacement& p, const float* depth)
   r.place = p;
   r.depth = depth;
   std::copy(ctx->raster_pos.color, ctx->raster_pos.color + 4, r.color);
-  for_each_draw_buffer(ctx, [&] { draw_pixel_rect(ctx->raster, ctx->fb, r); });
+  r.raster = &ctx->raster_pos;
+  for_each_draw_buffer(
+      ctx, [&] { ctx->queries.samples_passed += draw_pixel_rect(ctx->raster, ctx->fb, r); });
 }
 
 // The part of the w x h rectangle at (x, y) inside the framebuffer.
@@ -234,13 +238,16 @@ void GLAPIENTRY Bitmap(GLsizei width, GLsizei height, GLfloat xorig, GLfloat yor
     };
     // §3.9: the colour sum (on with COLOR_SUM or lighting) adds the raster position's
     // secondary colour to bitmap fragments. llvmpipe does so for bitmaps, not for DrawPixels.
+    // With texturing or fog on, draw_bitmap adds it after texturing instead.
     float color[4] = {rp.color[0], rp.color[1], rp.color[2], rp.color[3]};
-    if (ctx->lighting.enabled || ctx->lighting.color_sum)
+    if ((ctx->lighting.enabled || ctx->lighting.color_sum) && ctx->raster.shade == nullptr)
       for (int c = 0; c < 3; ++c)
         color[c] += rp.color2[c];
+    // Occlusion queries count bitmap fragments too (GL 2.1 §4.1.7).
     for_each_draw_buffer(ctx, [&] {
-      draw_bitmap(ctx->raster, ctx->fb, corner(rp.win[0] - xorig + kEps),
-                  corner(rp.win[1] - yorig + kEps), width, height, bits.data(), color, rp.win[2]);
+      ctx->queries.samples_passed += draw_bitmap(
+          ctx->raster, ctx->fb, corner(rp.win[0] - xorig + kEps), corner(rp.win[1] - yorig + kEps),
+          width, height, bits.data(), color, rp.win[2], rp);
     });
   }
   rp.win[0] += xmove;

@@ -39,10 +39,12 @@ template <typename F> void for_each_draw_buffer(Context* ctx, F&& draw) {
     const bool count = ctx->raster.count_samples;
     uint8_t* const primary = fb.color;
     ctx->raster.count_samples = false;
+    ++ctx->raster_serial;
     fb.color = fb.color_also;
     draw();
     fb.color = primary;
     ctx->raster.count_samples = count;
+    ++ctx->raster_serial;
     snapshot.restore(ctx);
   }
   draw();

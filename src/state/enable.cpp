@@ -163,7 +163,10 @@ void GLAPIENTRY Hint(GLenum target, GLenum mode) {
   case GL_TEXTURE_COMPRESSION_HINT: slot = &ctx->hint_texture_compression; break;
   default: record_error(ctx, GL_INVALID_ENUM, "glHint", target); return;
   }
+  if (*slot == mode) return;
   *slot = mode;
+  // The fog hint chooses per-vertex or per-fragment fog (state/validate_texpipe.cpp).
+  if (target == GL_FOG_HINT) mark_dirty(ctx, kDirtyFog);
 }
 
 // Rendering is synchronous: every command has completed when it returns (GL 2.1 §5.5).

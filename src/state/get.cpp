@@ -20,6 +20,8 @@ int texture_get_values(Context* ctx, GLenum pname, double* v, bool* is_float); /
 int pixel_query(const Context* ctx, GLenum pname, double* v, int* kind);
 // Evaluator limits and grids (eval.cpp), as pixel_query.
 int eval_query(const Context* ctx, GLenum pname, double* v, int* kind);
+// EXT_vertex_array's *_ARRAY_COUNT_EXT (ext_commands.cpp): one integer.
+bool varray_ext_count(const Context* ctx, GLenum pname, double* value);
 
 namespace {
 
@@ -273,6 +275,7 @@ bool get_values(Context* ctx, GLenum pname, Values& out) {
   case GL_BLEND_SRC_ALPHA: out.add(ctx->blend_src_a); return true;
   case GL_BLEND_DST_ALPHA: out.add(ctx->blend_dst_a); return true;
   case GL_BLEND_EQUATION: out.add(ctx->blend_eq_rgb); return true;
+  case GL_BLEND_EQUATION_ALPHA: out.add(ctx->blend_eq_a); return true;
   case GL_BLEND_COLOR:
     out.kind = Kind::Normalized;
     for (float c : ctx->blend_color) out.add(c);
@@ -342,6 +345,10 @@ bool get_values(Context* ctx, GLenum pname, Values& out) {
   case GL_NUM_COMPRESSED_TEXTURE_FORMATS: out.add(0); return true;
   case GL_COMPRESSED_TEXTURE_FORMATS: return true;
   default: {
+    if (varray_ext_count(ctx, pname, out.v)) {
+      out.n = 1;
+      return true;
+    }
     // Texture units, texture environment and generation, fog (src/state/texenv.cpp).
     int kind = 0;
     if (!texpipe_get(ctx, pname, &kind, out.v, &out.n)) return false;

@@ -53,8 +53,12 @@ void raster_pos(float x, float y, float z, float w) {
   rp.valid = true;
   // §5.2: in selection mode a valid raster position is a hit.
   select_raster_hit(ctx, rp.win[2]);
-  // §2.13: the distance from the eye-coordinate origin (fog source FRAGMENT_DEPTH).
-  rp.distance = std::sqrt(eye.x * eye.x + eye.y * eye.y + eye.z * eye.z);
+  // §2.13: with fog source FOG_COORD the current fog coordinate, otherwise the distance from
+  // the eye-coordinate origin. A coordinate under every FOG_HINT: the raster position keeps
+  // no fog factor.
+  rp.distance = ctx->texpipe.fog.coord_src == GL_FOG_COORD
+                    ? ctx->texpipe.cur_fog_coord
+                    : std::sqrt(eye.x * eye.x + eye.y * eye.y + eye.z * eye.z);
   // Colours "just as is done for a vertex" (§2.14): lit, or the clamped current colours.
   // Raster positions have no facing; the front colours are the ones kept.
   const LightingState& ls = ctx->lighting;
@@ -94,7 +98,8 @@ void window_pos(float x, float y, float z) {
   rp.win[3] = 1.0f;
   rp.valid = true;
   select_raster_hit(ctx, rp.win[2]); // §5.2, as for RasterPos
-  rp.distance = 0.0f;
+  // §2.13: the current fog coordinate with fog source FOG_COORD, otherwise 0.
+  rp.distance = ctx->texpipe.fog.coord_src == GL_FOG_COORD ? ctx->texpipe.cur_fog_coord : 0.0f;
   for (int c = 0; c < 4; ++c)
     rp.color[c] = clamp01(ctx->cur_color[c]);
   for (int c = 0; c < 4; ++c)

@@ -106,6 +106,7 @@ void validate_state(Context* ctx) {
   // Texturing and fog: per-vertex and per-fragment setups, live attribute count.
   validate_texpipe(ctx, dirty);
   ctx->dirty = 0;
+  ++ctx->raster_serial; // the draw cache (transform.cpp) is stale
 }
 
 } // namespace pineda

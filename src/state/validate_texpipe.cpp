@@ -158,6 +158,14 @@ void validate_texpipe(Context* ctx, uint32_t dirty) {
   ss.fog_density = fog.density;
   ss.fog_start = fog.start;
   ss.fog_end = fog.end;
+  // GL 2.1 §3.10 lets f be computed per vertex and interpolated; §5.6 leaves the choice to
+  // FOG_HINT. FASTEST evaluates per vertex; NICEST and DONT_CARE per fragment, the accurate
+  // default. Mesa: classic swrast/tnl computed f per vertex unless the hint was NICEST
+  // (_DoVertexFog = hint != NICEST); Gallium (llvmpipe, the oracle) ignores the hint: its
+  // fixed-function vertex program (ffvertex_prog.c build_fog) outputs only the coordinate and
+  // the fragment shader evaluates f (st_nir_lower_fog). DONT_CARE follows llvmpipe, FASTEST
+  // the classic path.
+  ss.fog_per_vertex = fog.enabled && ctx->hint_fog == GL_FASTEST;
   const LightingState& ls = ctx->lighting;
   // §3.9: with lighting the sum applies when the specular colour is separate; otherwise
   // COLOR_SUM decides.
@@ -165,6 +173,12 @@ void validate_texpipe(Context* ctx, uint32_t dirty) {
   tp.shading = ss.unit_count != 0 || ss.fog;
   rs.shade = tp.shading ? &ss : nullptr;
   setup_vertex(ctx, units, ss.fog, tp.vertex);
+  TexVertexSetup& vs = tp.vertex;
+  vs.fog_per_vertex = ss.fog_per_vertex;
+  vs.fog_mode = fog.mode;
+  vs.fog_density = fog.density;
+  vs.fog_start = fog.start;
+  vs.fog_end = fog.end;
   // Live attributes: the colours (both when the sum happens per fragment), then up to the
   // last live texture unit or the fog coordinate.
   int count = 4;

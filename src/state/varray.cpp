@@ -59,7 +59,7 @@ void draw_range(Context* ctx, GLenum mode, size_t first, size_t count) {
   if (count == 0 || !ctx->arrays.vertex.enabled) return;
   if (!arrays_hold(ctx, first + count - 1)) return;
   ctx->fetch_scratch.resize(count);
-  if (!fetch_range(ctx, first, count, ctx->fetch_scratch.data())) return;
+  if (!fetch_range(ctx, first, count, ctx->fetch_scratch.data(), input_tex_units(ctx))) return;
   draw_vertices(ctx, mode, ctx->fetch_scratch.data(), count, nullptr, count);
 }
 
@@ -110,13 +110,14 @@ void draw_indexed(Context* ctx, GLenum mode, GLsizei count, GLenum type, const v
   if (!arrays_hold(ctx, hi)) return;
   if (span <= 4 * static_cast<size_t>(count) + 1024) {
     ctx->fetch_scratch.resize(span);
-    if (!fetch_range(ctx, lo, span, ctx->fetch_scratch.data())) return;
+    if (!fetch_range(ctx, lo, span, ctx->fetch_scratch.data(), input_tex_units(ctx))) return;
     for (uint32_t& i : idx)
       i -= lo;
     draw_vertices(ctx, mode, ctx->fetch_scratch.data(), span, idx.data(), idx.size());
   } else {
     ctx->fetch_scratch.resize(idx.size());
-    if (!fetch_list(ctx, idx.data(), idx.size(), ctx->fetch_scratch.data())) return;
+    if (!fetch_list(ctx, idx.data(), idx.size(), ctx->fetch_scratch.data(), input_tex_units(ctx)))
+      return;
     draw_vertices(ctx, mode, ctx->fetch_scratch.data(), idx.size(), nullptr, idx.size());
   }
 }

@@ -14,7 +14,13 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 
+#if defined(__SSE2__) && defined(__x86_64__)
+#include <emmintrin.h>
+#endif
+
+#include "fragment/simd.h"
 #include "texture/tex_image.h"
 #include "texture/texture_object.h"
 
@@ -272,15 +278,25 @@ Axis axis_linear(float s, int size, GLenum wrap) {
   return a;
 }
 
+// x rounded to the nearest integer, ties to even (the default rounding mode), as nearbyint;
+// on x86-64 one conversion instruction instead of nearbyint's sequence.
+inline int64_t round_even(float x) {
+#if defined(__SSE2__) && defined(__x86_64__)
+  return _mm_cvtss_si64(_mm_set_ss(x));
+#else
+  return static_cast<int64_t>(std::nearbyint(x));
+#endif
+}
+
 // The fixed-point variant of axis_linear for REPEAT and CLAMP_TO_EDGE (see the file comment).
 // Coordinates are in 1/256 texel, rounded to nearest (even on ties, as the SIMD conversion).
-Axis axis_linear_fixed(float s, int size, GLenum wrap) {
+inline Axis axis_linear_fixed(float s, int size, GLenum wrap) {
   s = sane(s);
   Axis a;
   const bool repeat = wrap == GL_REPEAT;
   const bool pot = (size & (size - 1)) == 0;
   const float scaled = (repeat && !pot ? frac(s) : s) * float(size) * 256.0f;
-  const int64_t u = static_cast<int64_t>(std::nearbyint(scaled)) - 128;
+  const int64_t u = round_even(scaled) - 128;
   a.w8 = static_cast<int>(u & 255);
   const int64_t i0 = u >> 8;
   if (repeat && pot) {
@@ -530,6 +546,77 @@ void sample_2d_base(const SamplerView& v, int n, const float* s, const float* t,
   }
 }
 
+// The texel at a fetch8 address widened to the low four 16-bit lanes.
+inline i16x8 texel_lanes(const uint8_t* p) {
+  u32x4 v = {};
+  std::memcpy(&v, p, 4);
+  return reinterpret_cast<i16x8>(widen_lo(reinterpret_cast<u8x16>(v)));
+}
+
+// One level of a 2D colour texture with REPEAT or CLAMP_TO_EDGE on both axes, as 8-bit values in
+// lanes 0..3: the texel for NEAREST, llvmpipe's fixed-point bilinear filter for LINEAR (the same
+// arithmetic as sample_level's fixed path, both rows' horizontal steps in one vector).
+inline i16x8 sample_level8(const LevelCtx& c, GLenum filter, float s, float t) {
+  const SamplerView& v = *c.v;
+  if (filter == GL_NEAREST)
+    return texel_lanes(
+        fetch8(c, axis_nearest(s, c.w, v.wrap_s).i0, axis_nearest(t, c.h, v.wrap_t).i0, 0));
+  const Axis as = axis_linear_fixed(s, c.w, v.wrap_s);
+  const Axis at = axis_linear_fixed(t, c.h, v.wrap_t);
+  uint32_t p[4];
+  std::memcpy(&p[0], fetch8(c, as.i0, at.i0, 0), 4);
+  std::memcpy(&p[1], fetch8(c, as.i0, at.i1, 0), 4);
+  std::memcpy(&p[2], fetch8(c, as.i1, at.i0, 0), 4);
+  std::memcpy(&p[3], fetch8(c, as.i1, at.i1, 0), 4);
+  // Lanes 0..3 the row at.i0, lanes 4..7 the row at.i1.
+  const u32x4 left = {p[0], p[1], 0, 0}, right = {p[2], p[3], 0, 0};
+  const i16x8 rows =
+      lerp8_lanes(reinterpret_cast<i16x8>(widen_lo(reinterpret_cast<u8x16>(left))),
+                  reinterpret_cast<i16x8>(widen_lo(reinterpret_cast<u8x16>(right))), as.w8);
+  return lerp8_lanes(rows, __builtin_shufflevector(rows, rows, 4, 5, 6, 7, 4, 5, 6, 7), at.w8);
+}
+
+// 2D colour textures with REPEAT or CLAMP_TO_EDGE wraps, every filter: the level selection of
+// sample_texture with the texels kept as 8-bit integers until the end, which gives the same
+// results as the general loop (whose float values are exactly these integers / 255).
+void sample_2d_fixed(const SamplerView& v, int n, const float* s, const float* t,
+                     const float* lambda, float total_bias, GLenum min_img, bool mip_linear,
+                     bool mip_nearest, float (*rgba)[4]) {
+  LevelCtx levels[kMaxTexLevels];
+  for (int l = v.base_level; l <= v.max_level; ++l)
+    levels[l] = level_ctx(v, 0, l, 2);
+  for (int i = 0; i < n; ++i) {
+    const float ss = s[i];
+    const float tt = t != nullptr ? t[i] : 0.0f;
+    float lod = lambda[i] + total_bias;
+    if (!(lod == lod)) lod = 0.0f;
+    lod = std::min(lod, v.max_lod);
+    lod = std::max(lod, v.min_lod);
+    i16x8 out;
+    if (lod <= v.c || !(mip_linear || mip_nearest)) {
+      out = sample_level8(levels[v.base_level], lod <= v.c ? v.mag_filter : min_img, ss, tt);
+    } else if (mip_nearest) {
+      const int d = v.base_level + static_cast<int>(std::floor(std::min(lod, 64.0f) + 0.5f));
+      out = sample_level8(levels[clampi(d, v.base_level, v.max_level)], min_img, ss, tt);
+    } else {
+      const float lc = std::min(lod, 64.0f);
+      const float fl = std::floor(lc);
+      int d0 = v.base_level + static_cast<int>(fl);
+      float w = lc - fl;
+      if (d0 >= v.max_level) {
+        d0 = v.max_level;
+        w = 0.0f;
+      }
+      out = sample_level8(levels[d0], min_img, ss, tt);
+      const int w8 = static_cast<int>(w * 256.0f);
+      if (w8 > 0) out = lerp8_lanes(out, sample_level8(levels[d0 + 1], min_img, ss, tt), w8);
+    }
+    const f32x4 f = __builtin_convertvector(__builtin_shufflevector(out, out, 0, 1, 2, 3), f32x4) *
+                    (1.0f / 255.0f);
+    std::memcpy(rgba[i], &f, sizeof(f));
+  }
+}
+
 } // namespace
 
 void sample_texture(const SamplerView& v, int n, const float* s, const float* t, const float* r,
@@ -551,6 +638,8 @@ void sample_texture(const SamplerView& v, int n, const float* s, const float* t,
           : GL_LINEAR;
   if (fixed && dims == 2 && !mip_linear && !mip_nearest && min_img == v.mag_filter)
     return sample_2d_base(v, n, s, t, min_img, rgba);
+  if (fixed && dims == 2)
+    return sample_2d_fixed(v, n, s, t, lambda, total_bias, min_img, mip_linear, mip_nearest, rgba);
   // The levels' set-up, once per call.
   LevelCtx levels[6][kMaxTexLevels];
   for (int f = 0; f < v.faces; ++f)

@@ -46,9 +46,11 @@ void copy_tex_image(const char* func, int dims, GLenum target, GLint level, GLen
     return record_error(ctx, GL_INVALID_ENUM, func, target);
   if (level < 0 || level >= it.max_levels) return record_error(ctx, GL_INVALID_VALUE, func);
   TexFormatInfo info;
-  // §3.8.2: internalformat as for TexImage, except that 1, 2, 3 and 4 are not allowed.
+  // §3.8.2: internalformat as for TexImage, except that 1, 2, 3 and 4 are not allowed; an
+  // invalid one is INVALID_ENUM here (not INVALID_VALUE as for TexImage). The 1D command takes
+  // its arguments "as TexImage1D" but the same rule, as in Mesa.
   if (internalformat <= 4 || !lookup_internal_format(GLint(internalformat), info))
-    return record_error(ctx, GL_INVALID_VALUE, func);
+    return record_error(ctx, GL_INVALID_ENUM, func);
   if (border != 0 && border != 1) return record_error(ctx, GL_INVALID_VALUE, func);
   if (dims < 2) height = 1;
   const int bb = 2 * border;

@@ -21,10 +21,12 @@ namespace {
 
 // ---- client images (src/pixel/unpack.h) ----
 
-// The format/type error of a texture image command (§3.8.1): unknown enums, STENCIL_INDEX and
-// BITMAP are INVALID_ENUM; packed types with the wrong format INVALID_OPERATION.
+// The format/type error of a texture image command (§3.8.1): unknown enums and STENCIL_INDEX
+// are INVALID_ENUM; packed types with the wrong format INVALID_OPERATION. COLOR_INDEX with
+// BITMAP is allowed, as for DrawPixels (§3.8.1 excludes only STENCIL_INDEX): each bit is an
+// index that the I_TO_R .. I_TO_A maps turn into RGBA (§3.6.5).
 GLenum client_format_type_error(GLenum format, GLenum type) {
-  if (format == GL_STENCIL_INDEX || type == GL_BITMAP) return GL_INVALID_ENUM;
+  if (format == GL_STENCIL_INDEX) return GL_INVALID_ENUM;
   return check_pixel_format_type(format, type);
 }
 

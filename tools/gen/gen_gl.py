@@ -2,8 +2,9 @@
 """Generates Pineda's GL API layer from the Khronos registry.
 
 Inputs: gl.xml (the Khronos registry), src/api/entry_points.txt (the GL commands Pineda
-implements), src/api/dlist_immediate.txt and src/api/dlist_savers.txt (how each command behaves
-while a display list is compiled). Outputs, all under --out-dir:
+implements), src/api/extensions.txt (the extensions Pineda advertises),
+src/api/dlist_immediate.txt and src/api/dlist_savers.txt (how each command behaves while a
+display list is compiled). Outputs, all under --out-dir:
 
   include/GL/pineda_gl_api.h    enums, prototypes and PFNGL...PROC typedefs of GL 1.0-1.5,
                                 GL_ARB_imaging and GL_ARB_multitexture (for <GL/gl.h>)
@@ -13,7 +14,9 @@ while a display list is compiled). Outputs, all under --out-dir:
   dispatch_tables.cpp           kExecDispatch, kNoopDispatch, t_dispatch
   dlist_save.cpp                kSaveDispatch (display-list compilation) and the generated
                                 savers: see DisplayListPlan
-  api_thunks.cpp                the exported gl* entry points, which call through t_dispatch
+  api_thunks.cpp                the exported gl* entry points, which call through t_dispatch,
+                                and the aliases of the advertised extensions (see Extensions)
+  extensions.h                  pineda::kGLExtensions, the GL_EXTENSIONS string
   proc_table.cpp                sorted name -> thunk address table, lookup_gl_proc()
   enum_names.cpp                sorted value -> name table, enum_name()
   exports.map                   linker version script
@@ -119,6 +122,10 @@ class Command:
             self.params.append((text_without_name(param), param.find('name').text))
             self.lens.append(param.get('len'))
         self.ptypes = [p.text for p in elem.iter('ptype')]
+        # The command this one is another name for (<alias name="..."/>): same parameters,
+        # same behaviour, e.g. glBindBufferARB -> glBindBuffer.
+        alias = elem.find('alias')
+        self.alias = alias.get('name') if alias is not None else None
 
     @property
     def short(self):
@@ -291,6 +298,71 @@ def read_entry_points(path, registry):
     if not names:
         fail('%s lists no commands' % path)
     return [registry.commands[n] for n in names]
+
+
+class Extensions:
+    """The extensions of src/api/extensions.txt, the only list of what GL_EXTENSIONS says, and
+    the commands they bring. Every command an advertised extension requires in gl.xml must be
+    either implemented under its own name (listed in entry_points.txt: the commands whose
+    semantics differ from any core command, e.g. glVertexPointerEXT with its count) or be a
+    registry alias of an implemented command. The alias is then exported as a thunk that calls
+    the implemented command's dispatch entry, so it behaves exactly like it (display lists
+    included). An extension with a command that is neither stops the build: it cannot be
+    advertised before that command exists."""
+
+    def __init__(self, path, registry, commands):
+        try:
+            with open(path, encoding='utf-8') as handle:
+                lines = handle.readlines()
+        except OSError as err:
+            fail('cannot read %s: %s' % (path, err))
+        implemented = {c.name: c for c in commands}
+        known = {b.name: b for b in registry.extensions}
+        self.names = []
+        self.aliases = []  # (alias Command, implemented Command), sorted by alias name
+        seen, problems, aliased = {}, [], {}
+        for number, line in enumerate(lines, 1):
+            words = line.split('#', 1)[0].split()
+            if not words:
+                continue
+            name = words[0]
+            where = '%s:%d' % (path, number)
+            # A few names that drivers have always advertised never entered the registry
+            # (GL_EXT_texture_edge_clamp): marked "unregistered", they may have no commands.
+            if words[1:] == ['unregistered'] and name not in known:
+                if name in seen:
+                    fail("%s: '%s' is listed twice" % (where, name))
+                seen[name] = number
+                self.names.append(name)
+                continue
+            if len(words) != 1:
+                fail("%s: one extension name per line, optionally followed by 'unregistered'"
+                     % where)
+            if name not in known:
+                close = difflib.get_close_matches(name, list(known), 3)
+                hint = ' (did you mean %s?)' % ', '.join(close) if close else ''
+                fail("%s: '%s' is not a desktop GL extension of gl.xml%s" % (where, name, hint))
+            if name in seen:
+                fail("%s: '%s' is listed twice (first at line %d)" % (where, name, seen[name]))
+            seen[name] = number
+            self.names.append(name)
+            for command in known[name].commands:
+                if command in implemented or command in aliased:
+                    continue
+                target = registry.commands[command].alias
+                if target in implemented:
+                    aliased[command] = implemented[target]
+                else:
+                    problems.append('  %s (%s): %s' % (
+                        name, where, command if target is None else
+                        '%s, an alias of %s, which is not implemented' % (command, target)))
+        if problems:
+            fail('these commands of extensions in %s are neither in src/api/entry_points.txt '
+                 'nor gl.xml aliases of commands that are:\n%s\nImplement them (and list them '
+                 'in entry_points.txt) or do not advertise the extension.'
+                 % (path, '\n'.join(problems)))
+        for command in sorted(aliased, key=lambda n: n.encode('ascii')):
+            self.aliases.append((registry.commands[command], aliased[command]))
 
 
 def define_enum(enum):
@@ -526,7 +598,7 @@ SOURCE_INCLUDES = ['#define GL_GLEXT_PROTOTYPES 1', '#include <GL/gl.h>', '#incl
                    '', '#include "dispatch.h"', '']
 
 
-def gen_api_thunks(commands):
+def gen_api_thunks(commands, extensions):
     out = cpp_prologue()
     out += ['// The exported gl* symbols: each forwards to the calling thread\'s dispatch table.']
     out += SOURCE_INCLUDES
@@ -535,21 +607,59 @@ def gen_api_thunks(commands):
         out += ['extern "C" __attribute__((visibility("default"))) %s GLAPIENTRY %s(%s) {'
                 % (c.ret, c.name, c.param_list()),
                 '  %s%s' % ('return ' if c.returns_value() else '', call), '}']
+    out += ['', '// The aliases of the advertised extensions (src/api/extensions.txt): each calls',
+            '// the dispatch entry of the command gl.xml names as its alias.']
+    for alias, target in extensions.aliases:
+        if len(alias.params) != len(target.params):
+            fail('%s has %d parameters, its alias %s %d' % (alias.name, len(alias.params),
+                                                             target.name, len(target.params)))
+        # Same meaning, but the registry may spell a type differently (GLenum/GLint
+        # internalformat, GLsizeiptrARB/GLsizeiptr): convert explicitly where it does.
+        args = []
+        for (atype, aname), (ttype, _) in zip(alias.params, target.params):
+            args.append(aname if atype == ttype else 'static_cast<%s>(%s)' % (ttype, aname))
+        call = 'pineda::t_dispatch->%s(%s);' % (target.short, ', '.join(args))
+        out += ['extern "C" __attribute__((visibility("default"))) %s GLAPIENTRY %s(%s) {'
+                % (alias.ret, alias.name, alias.param_list()),
+                '  %s%s' % ('return ' if alias.returns_value() else '', call), '}']
     return '\n'.join(out) + '\n'
 
 
-def gen_proc_table(commands):
+def gen_extensions_h(extensions):
+    out = cpp_prologue()
+    out += ['// The GL_EXTENSIONS string (GL 2.1 §6.1.11): the list of src/api/extensions.txt,',
+            '// from which the exported extension aliases are generated too.',
+            '#pragma once', '', 'namespace pineda {', '',
+            'constexpr const char* kGLExtensions =']
+    line = ''
+    pieces = []
+    for name in extensions.names:
+        word = name + ' '
+        if len(line) + len(word) > 88:
+            pieces.append(line)
+            line = ''
+        line += word
+    pieces.append(line)
+    pieces[-1] = pieces[-1].rstrip()
+    out += ['    "%s"' % piece for piece in pieces]
+    out[-1] += ';'
+    out += ['', '}  // namespace pineda']
+    return '\n'.join(out) + '\n'
+
+
+def gen_proc_table(commands, extensions):
     out = cpp_prologue()
     out += SOURCE_INCLUDES
     out += ['#include <algorithm>', '#include <cstring>', '',
             '// Declared again here because some commands Pineda implements may have no',
             '// prototype in the public headers (e.g. commands of APIs other than desktop GL).',
             'extern "C" {']
-    for c in commands:
+    exported = list(commands) + [alias for alias, _ in extensions.aliases]
+    for c in exported:
         out.append('%s GLAPIENTRY %s(%s);' % (c.ret, c.name, c.param_list()))
     out += ['}', '', 'namespace pineda {', '', 'namespace {', '',
             'const ProcEntry kProcTable[] = {']
-    for c in sorted(commands, key=lambda c: c.name.encode('ascii')):
+    for c in sorted(exported, key=lambda c: c.name.encode('ascii')):
         out.append('    {"%s", reinterpret_cast<void*>(&::%s)},' % (c.name, c.name))
     out += [
         '};',
@@ -650,12 +760,13 @@ def gen_enum_names(registry):
     return '\n'.join(out) + '\n'
 
 
-def gen_exports_map(commands):
+def gen_exports_map(commands, extensions):
     out = ['/* %s */' % GENERATED_NOTE,
            '/* Only the GL commands Pineda implements and the OSMesa and GLX entry points leave',
            '   the library; everything else stays local. */',
            '{', '  global:']
-    out += ['    %s;' % c.name for c in sorted(commands, key=lambda c: c.name)]
+    exported = list(commands) + [alias for alias, _ in extensions.aliases]
+    out += ['    %s;' % c.name for c in sorted(exported, key=lambda c: c.name)]
     out += ['    OSMesa*;', '    glX*;', '  local:', '    *;', '};']
     return '\n'.join(out) + '\n'
 
@@ -844,6 +955,8 @@ def main():
     parser = argparse.ArgumentParser(description=__doc__.split('\n', 1)[0])
     parser.add_argument('--registry', required=True, help='path of gl.xml')
     parser.add_argument('--entry-points', required=True, help='path of entry_points.txt')
+    parser.add_argument('--extensions', required=True,
+                        help='path of extensions.txt (the extensions GL_EXTENSIONS lists)')
     parser.add_argument('--dlist-immediate', required=True,
                         help='path of dlist_immediate.txt (commands display lists execute at once)')
     parser.add_argument('--dlist-savers', required=True,
@@ -855,6 +968,7 @@ def main():
     registry = Registry(args.registry)
     commands = read_entry_points(args.entry_points, registry)
     plan = DisplayListPlan(commands, registry, args.dlist_immediate, args.dlist_savers)
+    extensions = Extensions(args.extensions, registry, commands)
     headers = HeaderWriter(registry)
     outputs = {
         'include/GL/pineda_gl_api.h': headers.gl_api(),
@@ -862,10 +976,11 @@ def main():
         'dispatch.h': gen_dispatch_h(commands, plan),
         'dlist_save.cpp': gen_dlist_save(plan, commands),
         'dispatch_tables.cpp': gen_dispatch_tables(commands),
-        'api_thunks.cpp': gen_api_thunks(commands),
-        'proc_table.cpp': gen_proc_table(commands),
+        'api_thunks.cpp': gen_api_thunks(commands, extensions),
+        'extensions.h': gen_extensions_h(extensions),
+        'proc_table.cpp': gen_proc_table(commands, extensions),
         'enum_names.cpp': gen_enum_names(registry),
-        'exports.map': gen_exports_map(commands),
+        'exports.map': gen_exports_map(commands, extensions),
     }
     for relative, content in outputs.items():
         write_if_different(os.path.join(args.out_dir, relative), content)

@@ -8,6 +8,7 @@
 #include <unordered_set>
 
 #include "dispatch.h"
+#include "state/attrib.h"
 #include "winsys/glx/glx_internal.h"
 
 #define GLX_EXPORT extern "C" __attribute__((visibility("default")))
@@ -285,6 +286,13 @@ bool version_defined(int major, int minor) {
 }
 
 } // namespace
+
+GlxContext* current_binding(Display** dpy) {
+  GlxContext* c = current_glx();
+  *dpy = c != nullptr ? t_dpy : nullptr;
+  return c;
+}
+
 } // namespace pineda::glx
 
 using namespace pineda::glx;
@@ -423,6 +431,37 @@ GLX_EXPORT void glXDestroyContext(Display* dpy, GLXContext ctx) {
     delete c;
 }
 
+// GLX 1.4 §3.3.7: copies the attribute groups of `mask` (glPushAttrib's bits) from source to
+// dest, with glPopAttrib's order and the same code (src/state/attrib.cpp).
+GLX_EXPORT void glXCopyContext(Display* dpy, GLXContext source, GLXContext dest,
+                               unsigned long mask) {
+  ApiLock api;
+  DisplayState* ds = display_state(dpy);
+  GlxContext* src = lookup_context(source);
+  GlxContext* dst = lookup_context(dest);
+  if (src == nullptr || dst == nullptr) {
+    report_error(ds, GLXBadContext, 0, 0, kReqCopyContext);
+    return;
+  }
+  // Every context lives in this process, so only the screens can differ.
+  if (ds == nullptr || src->ds != ds || dst->ds != ds ||
+      src->config->screen != dst->config->screen) {
+    report_error(ds, -1, BadMatch, 0, kReqCopyContext);
+    return;
+  }
+  if (dst->is_current) {
+    report_error(ds, -1, BadAccess, 0, kReqCopyContext);
+    return;
+  }
+  // The flush and the copy run GL code whose window-system hooks take the registry lock.
+  const bool flush = src == current_glx();
+  api.lock.unlock();
+  // "glXCopyContext performs an implicit glFlush if source is the current context".
+  if (flush) pineda::exec::Flush();
+  pineda::copy_attrib_groups(src, dst, static_cast<GLbitfield>(mask));
+  api.lock.lock();
+}
+
 GLX_EXPORT Bool glXMakeCurrent(Display* dpy, GLXDrawable drawable, GLXContext ctx) {
   return make_current(dpy, drawable, drawable, ctx, kReqMakeCurrent);
 }
@@ -558,6 +597,7 @@ struct GlxProc {
 const GlxProc kGlxProcs[] = {
     PINEDA_GLX_PROC(glXChooseFBConfig),
     PINEDA_GLX_PROC(glXChooseVisual),
+    PINEDA_GLX_PROC(glXCopyContext),
     PINEDA_GLX_PROC(glXCreateContext),
     PINEDA_GLX_PROC(glXCreateContextAttribsARB),
     PINEDA_GLX_PROC(glXCreateGLXPixmap),
@@ -596,6 +636,7 @@ const GlxProc kGlxProcs[] = {
     PINEDA_GLX_PROC(glXSwapBuffers),
     PINEDA_GLX_PROC(glXSwapIntervalEXT),
     PINEDA_GLX_PROC(glXSwapIntervalMESA),
+    PINEDA_GLX_PROC(glXUseXFont),
     PINEDA_GLX_PROC(glXWaitGL),
     PINEDA_GLX_PROC(glXWaitX),
 };

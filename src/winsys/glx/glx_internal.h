@@ -149,13 +149,19 @@ struct ApiLock {
   }
 };
 
+// This thread's current GLX context (nullptr when GL calls go elsewhere or nowhere) and the
+// display it was made current on (glx_api.cpp).
+GlxContext* current_binding(Display** dpy);
+
 // GLX request numbers (glxproto), used as the minor opcode of reported errors.
 enum GlxRequest : int {
   kReqCreateContext = 3,
   kReqDestroyContext = 4,
   kReqMakeCurrent = 5,
   kReqIsDirect = 6,
+  kReqCopyContext = 10,
   kReqSwapBuffers = 11,
+  kReqUseXFont = 12,
   kReqCreateGLXPixmap = 13,
   kReqDestroyGLXPixmap = 15,
   kReqCreatePixmap = 22,

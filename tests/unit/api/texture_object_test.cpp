@@ -467,7 +467,7 @@ TEST_F(TextureTest, CopyTexImage) {
   EXPECT_EQ(back[(1 * 4 + 1) * 4 + 2], 255);
   EXPECT_EQ(back[0], 255);
   glCopyTexImage2D(GL_TEXTURE_2D, 0, 3, 0, 0, 4, 4, 0);
-  EXPECT_EQ(err(), GLenum(GL_INVALID_VALUE));
+  EXPECT_EQ(err(), GLenum(GL_INVALID_ENUM)); // §3.8.2: INVALID_ENUM for CopyTexImage
   glCopyTexImage2D(GL_PROXY_TEXTURE_2D, 0, GL_RGB, 0, 0, 4, 4, 0);
   EXPECT_EQ(err(), GLenum(GL_INVALID_ENUM));
   glCopyTexSubImage2D(GL_TEXTURE_2D, 0, 3, 3, 0, 0, 2, 2);

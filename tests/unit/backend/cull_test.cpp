@@ -129,8 +129,10 @@ TEST(Cull, ZeroAreaIsBackFacing) {
     rs.front_face = front;
     const std::vector<PVertex> v = {win_vertex(rs, 10, 10, 0), win_vertex(rs, 20, 20, 1),
                                     win_vertex(rs, 30, 30, 2)};
-    // FILL: covers nothing, so nothing reaches the rasterizer.
-    EXPECT_TRUE(draw(rs, GL_TRIANGLES, v).tris.empty());
+    // FILL: covers nothing. The rasterizer's sink drops it at compile time
+    // (RasterSink::kKeepsZeroArea); this sink, the one of selection and feedback, receives it
+    // (GL 2.1 §5.2, §5.3), as llvmpipe reports it.
+    EXPECT_EQ(draw(rs, GL_TRIANGLES, v).tris.size(), 1u);
     // LINE: a back-facing polygon still outlines...
     rs.polygon_mode[0] = GL_FILL;
     rs.polygon_mode[1] = GL_LINE;
@@ -139,6 +141,9 @@ TEST(Cull, ZeroAreaIsBackFacing) {
     rs.cull_enabled = true;
     rs.cull_face = GL_BACK;
     EXPECT_TRUE(draw(rs, GL_TRIANGLES, v).lines.empty());
+    rs.polygon_mode[1] = GL_FILL;
+    EXPECT_TRUE(draw(rs, GL_TRIANGLES, v).tris.empty());
+    rs.polygon_mode[1] = GL_LINE;
     rs.cull_face = GL_FRONT;
     EXPECT_EQ(draw(rs, GL_TRIANGLES, v).lines.size(), 3u);
   }
