@@ -385,6 +385,9 @@ struct Context {
   std::vector<InputVertex> fetch_scratch;
   std::vector<PVertex> pvert_scratch;
   std::vector<uint32_t> index_scratch;
+
+  // Worker threads sharing large draws and clears (src/raster/workers.h), started on first use.
+  RasterWorkers workers;
 };
 
 // The context current on this thread, or nullptr (GL 2.1 §2.1: commands without a current

@@ -23,6 +23,11 @@ struct Rect {
   int h() const { return y1 - y0; }
 };
 
+// Clears of at least this many pixels are shared among the worker threads, in runs of at
+// least kShareClearRows rows.
+constexpr int64_t kShareClearArea = 512 * 1024;
+constexpr int kShareClearRows = 16;
+
 uint8_t to_unorm8(float c) {
   c = c > 0.0f ? (c < 1.0f ? c : 1.0f) : 0.0f; // clear colour is clamped (GL 2.1 §4.2.3)
   return static_cast<uint8_t>(c * 255.0f + 0.5f);
@@ -150,7 +155,7 @@ void clear_rect(Framebuffer& fb, const ClearState& cs, GLbitfield mask, const Re
 
 } // namespace
 
-void clear_buffers(Framebuffer& fb, const ClearState& cs, GLbitfield mask) {
+void clear_buffers(Framebuffer& fb, const ClearState& cs, GLbitfield mask, RasterWorkers* workers) {
   Rect r{0, 0, fb.width, fb.height};
   if (cs.scissor_test) {
     // GL 2.1 §4.2.3: clears pass the scissor test (§4.1.2) like fragments. 64-bit ends, so
@@ -161,6 +166,23 @@ void clear_buffers(Framebuffer& fb, const ClearState& cs, GLbitfield mask) {
     r.y0 = std::max(r.y0, cs.scissor[1]);
     r.x1 = static_cast<int>(std::min<int64_t>(r.x1, x1));
     r.y1 = static_cast<int>(std::min<int64_t>(r.y1, y1));
+  }
+  // A large clear is split into one run of rows per worker thread (raster/workers.h): each
+  // pixel is written once whoever writes it, so the result is the same.
+  const int64_t area = int64_t{std::max(r.w(), 0)} * std::max(r.h(), 0);
+  if (workers != nullptr && area >= kShareClearArea && r.h() >= 2 * kShareClearRows) {
+    const int n = std::min(workers->threads(), r.h() / kShareClearRows);
+    if (n > 1) {
+      auto job = [&](int i) {
+        if (i >= n) return;
+        Rect part = r;
+        part.y0 = r.y0 + static_cast<int>(int64_t{r.h()} * i / n);
+        part.y1 = r.y0 + static_cast<int>(int64_t{r.h()} * (i + 1) / n);
+        clear_rect(fb, cs, mask, part);
+      };
+      workers->run(job);
+      return;
+    }
   }
   clear_rect(fb, cs, mask, r);
 }

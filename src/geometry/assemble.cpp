@@ -7,6 +7,8 @@
 // split decides how a smooth-shaded quad's colours are interpolated, and clipping a triangle
 // leaves its interpolation unchanged, so a quad shades the same whether or not it is clipped.
 // Every emitted triangle lists its provoking vertex (GL 2.1 §2.14.7, Table 2.12) last.
+#include <algorithm>
+#include <cmath>
 #include <cstddef>
 #include <cstdint>
 
@@ -291,6 +293,80 @@ void assemble(Sink& sink, const DrawCall& dc, GLenum mode, const PVertex* verts,
     as.run(mode, DirectFetch{verts}, count);
 }
 
+// Sharing a draw among the worker threads (raster/workers.h) costs each worker the assembly
+// and setup of every primitive and the caller a wake-up and a wait, some microseconds: only
+// draws with many vertices or a large window area are shared. One triangle per Begin/End
+// (immediate mode) stays on the calling thread.
+constexpr size_t kShareVertices = 1024;
+constexpr int64_t kShareArea = 32768; // pixels of the draw's window bounding box
+
+bool worth_sharing(const RasterState& rs, const FragCtx& frag, GLenum mode, const PVertex* verts,
+                   const uint32_t* indices, size_t count) {
+  if (count >= kShareVertices) return true;
+  const RasterModes& m = rs.modes;
+  // Lines and points cover little of their bounding box unless wide or smooth.
+  float pad = 1.0f;
+  if (mode == GL_POINTS) {
+    if (!m.point_smooth && (m.point_attenuated ? m.point_size_max : m.point_size) <= 2.0f)
+      return false;
+    pad += 0.5f * (m.point_attenuated ? m.point_size_max : m.point_size) + 1.0f;
+  } else if (mode == GL_LINES || mode == GL_LINE_STRIP || mode == GL_LINE_LOOP) {
+    if (!m.line_smooth && m.line_width < 2.5f) return false;
+    pad += 0.5f * m.line_width + 1.0f;
+  }
+  // The window bounding box of the vertices, clamped to the clip rectangle. A vertex outside
+  // the clip volume has no window position yet: its clip coordinates are projected here, and
+  // one with w <= 0 (whose primitives may reach anywhere) stands for the whole rectangle.
+  const Viewport& vp = rs.viewport;
+  const float cx0 = static_cast<float>(frag.clip_x0), cx1 = static_cast<float>(frag.clip_x1) + 1;
+  const float cy0 = static_cast<float>(frag.clip_y0), cy1 = static_cast<float>(frag.clip_y1) + 1;
+  float x0 = cx1, y0 = cy1, x1 = cx0, y1 = cy0;
+  for (size_t i = 0; i < count; ++i) {
+    const PVertex& v = verts[indices != nullptr ? indices[i] : i];
+    float x = v.win[0], y = v.win[1];
+    if (v.clipmask != 0) {
+      const float w = v.clip[3];
+      x = vp.x + (v.clip[0] / w + 1.0f) * 0.5f * vp.w;
+      y = vp.y + (v.clip[1] / w + 1.0f) * 0.5f * vp.h;
+      if (!(w > 0.0f) || !std::isfinite(x) || !std::isfinite(y)) {
+        x0 = cx0, y0 = cy0, x1 = cx1, y1 = cy1;
+        break;
+      }
+    }
+    x0 = std::min(x0, x - pad);
+    x1 = std::max(x1, x + pad);
+    y0 = std::min(y0, y - pad);
+    y1 = std::max(y1, y + pad);
+  }
+  x0 = std::max(x0, cx0), x1 = std::min(x1, cx1);
+  y0 = std::max(y0, cy0), y1 = std::min(y1, cy1);
+  if (!(x1 > x0 && y1 > y0)) return false;
+  const int64_t w = static_cast<int64_t>(x1 - x0), h = static_cast<int64_t>(y1 - y0);
+  return w > 0 && h > 0 && w * h >= kShareArea;
+}
+
+// Runs the draw on `n` threads: each assembles every primitive in order (with its own
+// fragment context, stipple counter and sample count) and rasterizes its bands' rows only.
+void draw_shared(const DrawCall& dc, const FragCtx& frag, int n, GLenum mode, const PVertex* verts,
+                 const uint32_t* indices, size_t count) {
+  uint64_t samples[kMaxRasterThreads] = {};
+  auto job = [&](int i) {
+    FragCtx local = frag;
+    DrawCall share = dc;
+    share.frag = &local;
+    float stipple_counter = 0.0f;
+    share.stipple_counter = &stipple_counter;
+    share.bands = Bands{n, i};
+    RasterSink sink{share};
+    assemble(sink, share, mode, verts, indices, count);
+    samples[i] = local.samples_passed;
+  };
+  dc.workers->run(job);
+  if (dc.samples_passed != nullptr)
+    for (int i = 0; i < n; ++i)
+      *dc.samples_passed += samples[i];
+}
+
 } // namespace
 
 void draw_primitives(const DrawCall& dc, GLenum mode, const PVertex* verts, const uint32_t* indices,
@@ -304,6 +380,11 @@ void draw_primitives(const DrawCall& dc, GLenum mode, const PVertex* verts, cons
     frag = &local;
   }
   frag->samples_passed = 0;
+  if (dc.workers != nullptr && !frag->noop && verts != nullptr &&
+      worth_sharing(*dc.state, *frag, mode, verts, indices, count)) {
+    const int n = dc.workers->threads();
+    if (n > 1) return draw_shared(dc, *frag, n, mode, verts, indices, count);
+  }
   DrawCall prepared = dc;
   prepared.frag = frag;
   float stipple_counter = 0.0f;

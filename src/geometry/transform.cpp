@@ -197,6 +197,7 @@ void draw_vertices_once(Context* ctx, GLenum mode, const InputVertex* in, size_t
   dc.fb = &fb;
   dc.frag = &cache.frag;
   if (rs.count_samples) dc.samples_passed = &ctx->queries.samples_passed;
+  dc.workers = &ctx->workers;
   draw_primitives(dc, mode, out.data(), indices, count);
 }
 

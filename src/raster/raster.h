@@ -11,6 +11,7 @@
 #include "framebuffer/framebuffer.h"
 #include "geometry/vertex.h"
 #include "raster/raster_modes.h"
+#include "raster/workers.h"
 
 namespace pineda {
 
@@ -120,6 +121,11 @@ struct DrawCall {
   float* stipple_counter = nullptr;
   // With RasterState::count_samples, draw_primitives adds the samples that passed here.
   uint64_t* samples_passed = nullptr;
+  // The context's worker threads (workers.h): draw_primitives shares a large draw among them.
+  // Null: the calling thread draws everything.
+  RasterWorkers* workers = nullptr;
+  // The rows this call rasterizes; draw_primitives sets it for each worker's share.
+  Bands bands;
 };
 
 // Primitive assembly, clipping, culling and rasterization of `count` vertices in `mode`
@@ -164,6 +170,8 @@ struct ClearState {
   bool scissor_test = false;
   int scissor[4] = {0, 0, 0, 0};
 };
-void clear_buffers(Framebuffer& fb, const ClearState& cs, GLbitfield mask);
+// A large clear is split over `workers` when given.
+void clear_buffers(Framebuffer& fb, const ClearState& cs, GLbitfield mask,
+                   RasterWorkers* workers = nullptr);
 
 } // namespace pineda

@@ -78,6 +78,7 @@ inline bool diamond_pixel(int64_t x, int64_t y, int64_t& px, int64_t& py) {
 // its blocks in order and never hits a pixel twice, so flushing on block change is enough.
 struct BlockBatch {
   const FragCtx& ctx;
+  const Bands& bands;
   const FragInputs& in;
   BlockFn fn;
   int bx = INT_MIN, by = INT_MIN;
@@ -85,6 +86,7 @@ struct BlockBatch {
 
   void add(int x, int y) {
     if (x < ctx.clip_x0 || x > ctx.clip_x1 || y < ctx.clip_y0 || y > ctx.clip_y1) return;
+    if (!bands.owns(y)) return;
     const int nbx = x & ~(kBlockSize - 1), nby = y & ~(kBlockSize - 1);
     if (nbx != bx || nby != by) {
       flush();
@@ -124,6 +126,16 @@ void line(const DrawCall& dc, const FragCtx& ctx, const PVertex& a, const PVerte
   const int64_t stipple_base = (stipple && counter != nullptr) ? static_cast<int64_t>(*counter) : 0;
   if (stipple && counter != nullptr) *counter += static_cast<float>(seg_len);
   if (dx == 0 && dy == 0) return; // the end point lies in every diamond the start point does
+  // Another worker draws the whole line (its fragments lie within width + 1 rows of the
+  // segment's rows): skip its setup.
+  if (dc.bands.count > 1) {
+    const int64_t pad = width + 1;
+    const int64_t y0 = (std::min(ya, yb) >> kSubpixelBits) - pad;
+    const int64_t y1 = (std::max(ya, yb) >> kSubpixelBits) + pad;
+    if (!dc.bands.owns_any(static_cast<int>(std::max<int64_t>(y0, ctx.clip_y0)),
+                           static_cast<int>(std::min<int64_t>(y1, ctx.clip_y1))))
+      return;
+  }
 
   // Interpolation planes from t(x, y) = ((p - pa) . (pb - pa)) / |pb - pa|^2.
   FragInputs in;
@@ -173,7 +185,7 @@ void line(const DrawCall& dc, const FragCtx& ctx, const PVertex& a, const PVerte
     in.shade = &si;
     shade = ShadePath::PerFragment;
   }
-  BlockBatch batch{ctx, in, ctx.fn[static_cast<int>(shade)]};
+  BlockBatch batch{ctx, dc.bands, in, ctx.fn[static_cast<int>(shade)]};
 
   // Major axis u, minor axis v.
   const int64_t ua = x_major ? xa : ya, va = x_major ? ya : xa;
@@ -228,10 +240,10 @@ void line(const DrawCall& dc, const FragCtx& ctx, const PVertex& a, const PVerte
     const int64_t m_lo = lo_owned ? -floor_div(-lo_num, den) : floor_div(lo_num, den) + 1;
     const int64_t m_hi = hi_owned ? floor_div(hi_num, den) : -floor_div(-hi_num, den) - 1;
     if (x_major)
-      emit_rect(ctx, in, batch.fn, static_cast<int>(col), static_cast<int>(m_lo),
+      emit_rect(ctx, dc.bands, in, batch.fn, static_cast<int>(col), static_cast<int>(m_lo),
                 static_cast<int>(col), static_cast<int>(m_hi));
     else
-      emit_rect(ctx, in, batch.fn, static_cast<int>(m_lo), static_cast<int>(col),
+      emit_rect(ctx, dc.bands, in, batch.fn, static_cast<int>(m_lo), static_cast<int>(col),
                 static_cast<int>(m_hi), static_cast<int>(col));
   };
 
@@ -286,6 +298,14 @@ void smooth_line(const DrawCall& dc, const FragCtx& ctx, const PVertex& a, const
   const double hw = modes.line_width <= 1.0f ? 1.0 : 0.5 * modes.line_width + 0.5;
   const double hl = 0.5 * len + 0.5;
   const bool x_major = std::fabs(dx) >= std::fabs(dy);
+  // Another worker draws the whole line: skip it.
+  if (dc.bands.count > 1) {
+    const double y0 = std::floor(std::min(ya, yb) - hw - 2.0);
+    const double y1 = std::ceil(std::max(ya, yb) + hw + 2.0);
+    if (!dc.bands.owns_any(static_cast<int>(std::max<double>(y0, ctx.clip_y0)),
+                           static_cast<int>(std::min<double>(y1, ctx.clip_y1))))
+      return;
+  }
   // Walk the major axis over the extended segment; each column's minor range covers the
   // rectangle (half width hw perpendicular to the line: hw / cos along the minor axis).
   const double ext = (hw + 1.0) * len / (x_major ? std::fabs(dx) : std::fabs(dy));
@@ -321,7 +341,7 @@ void smooth_line(const DrawCall& dc, const FragCtx& ctx, const PVertex& a, const
         if (k == 3) v *= cov;
         rgba[k] = color_to_unorm8(static_cast<float>(v));
       }
-      emit_fragment(ctx, px, py, za + (zb - za) * t, rgba);
+      emit_fragment(ctx, dc.bands, px, py, za + (zb - za) * t, rgba);
     }
   }
 }

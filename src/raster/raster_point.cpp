@@ -37,7 +37,8 @@ inline float point_size_of(const RasterModes& m, const PVertex& p) {
   return m.point_size;
 }
 
-void smooth_point(const FragCtx& ctx, const RasterModes& m, const PVertex& p, float size) {
+void smooth_point(const FragCtx& ctx, const Bands& bands, const RasterModes& m, const PVertex& p,
+                  float size) {
   const double r = (!m.point_attenuated && size <= 2.0f) ? 1.0 : 0.5 * size;
   if (!(r > 0.0)) return;
   const double x = p.win[0], y = p.win[1];
@@ -49,6 +50,7 @@ void smooth_point(const FragCtx& ctx, const RasterModes& m, const PVertex& p, fl
             px1 = static_cast<int>(std::ceil(x + r - 0.5)) - 1;
   const int py0 = static_cast<int>(std::ceil(y - r - 0.5)),
             py1 = static_cast<int>(std::ceil(y + r - 0.5)) - 1;
+  if (!bands.owns_any(std::max(py0, ctx.clip_y0), std::min(py1, ctx.clip_y1))) return;
   uint8_t rgba[4];
   const_color(p, kAttrColor, rgba);
   const float alpha = p.attr[kAttrColor + 3];
@@ -61,7 +63,7 @@ void smooth_point(const FragCtx& ctx, const RasterModes& m, const PVertex& p, fl
       if (d > 1.0) continue;
       const double cov = d <= k ? (1.0 - d) / (1.0 - k) : 1.0;
       rgba[3] = color_to_unorm8(static_cast<float>(alpha * cov));
-      emit_fragment(ctx, px, py, z, rgba);
+      emit_fragment(ctx, bands, px, py, z, rgba);
     }
   }
 }
@@ -70,7 +72,7 @@ void point(const DrawCall& dc, const FragCtx& ctx, const PVertex& p) {
   if (ctx.noop) return;
   const RasterModes& m = dc.state->modes;
   const float size = point_size_of(m, p);
-  if (m.point_smooth) return smooth_point(ctx, m, p, size);
+  if (m.point_smooth) return smooth_point(ctx, dc.bands, m, p, size);
   // Round to the nearest integer, halves down, at least 1 (llvmpipe's legacy points).
   int w = 1;
   if (size > 1.5f) w = static_cast<int>(std::min(std::ceil(size - 0.5f), kMaxPointSize));
@@ -86,6 +88,7 @@ void point(const DrawCall& dc, const FragCtx& ctx, const PVertex& p) {
         y0 <= static_cast<float>(ctx.clip_y1)))
     return;
   const int x = static_cast<int>(x0), y = static_cast<int>(y0);
+  if (!dc.bands.owns_any(std::max(y, ctx.clip_y0), std::min(y + w - 1, ctx.clip_y1))) return;
   FragInputs in;
   in.ox = x;
   in.oy = y;
@@ -98,7 +101,7 @@ void point(const DrawCall& dc, const FragCtx& ctx, const PVertex& p) {
     in.shade = &si;
     shade = ShadePath::PerFragment;
   }
-  emit_rect(ctx, in, ctx.fn[static_cast<int>(shade)], x, y, x + w - 1, y + w - 1);
+  emit_rect(ctx, dc.bands, in, ctx.fn[static_cast<int>(shade)], x, y, x + w - 1, y + w - 1);
 }
 
 } // namespace

@@ -105,10 +105,10 @@ inline uint64_t stipple_block_mask(const uint32_t* rows, int bx, int by) {
 }
 
 // `stipple`: the polygon stipple rows (kStipple), unused otherwise: the unstippled instance
-// carries no trace of stippling in its loops.
+// carries no trace of stippling in its loops. Only the block rows of `bands` are visited.
 template <bool kStipple>
 void traverse(const TriEdges& te, const FragCtx& ctx, const FragInputs& in, BlockFn fn,
-              const uint32_t* stipple) {
+              const uint32_t* stipple, const Bands& bands) {
   constexpr int B = kBlockSize;
   // Offsets from a block's first pixel to its corner pixel where an edge function is largest
   // (reject if even that is negative) and smallest (accept if even that is non-negative).
@@ -124,6 +124,7 @@ void traverse(const TriEdges& te, const FragCtx& ctx, const FragInputs& in, Bloc
   const Edges32 e32 = make_edges32(te);
 
   for (int by = te.miny & ~(B - 1); by <= te.maxy; by += B) {
+    if (!bands.owns(by)) continue;
     int64_t lo = bx_first, hi = bx_last;
     int64_t erow[3];
     bool skip = false;
@@ -176,6 +177,15 @@ void triangle(const DrawCall& dc, const FragCtx& ctx, const PVertex& a, const PV
               const PVertex& c, const PVertex& provoking, bool back_facing) {
   if (ctx.noop) return;
   const SnappedTri t = snap_triangle(a, b, c);
+  if (dc.bands.count > 1) {
+    // Another worker draws the whole triangle: skip its setup. Pixel centres inside lie in
+    // the rows from floor(ymin) to floor(ymax).
+    const int32_t ymin = std::min({t.y[0], t.y[1], t.y[2]});
+    const int32_t ymax = std::max({t.y[0], t.y[1], t.y[2]});
+    if (!dc.bands.owns_any(std::max(ymin >> kSubpixelBits, ctx.clip_y0),
+                           std::min(ymax >> kSubpixelBits, ctx.clip_y1)))
+      return;
+  }
   TriEdges te;
   if (!setup_edges(t, ctx.clip_x0, ctx.clip_y0, ctx.clip_x1, ctx.clip_y1, te)) return;
   const RasterState& rs = *dc.state;
@@ -191,9 +201,9 @@ void triangle(const DrawCall& dc, const FragCtx& ctx, const PVertex& a, const PV
   const auto run = [&](ShadePath path) {
     const BlockFn fn = ctx.fn[static_cast<int>(path)];
     if (modes.polygon_stipple)
-      traverse<true>(te, ctx, in, fn, modes.polygon_stipple_rows);
+      traverse<true>(te, ctx, in, fn, modes.polygon_stipple_rows, dc.bands);
     else
-      traverse<false>(te, ctx, in, fn, nullptr);
+      traverse<false>(te, ctx, in, fn, nullptr, dc.bands);
   };
   if (ctx.shade == nullptr) return run(shade);
   // Texturing and fog (fragment/shade.h): their planes exist only for the draws that use them.

@@ -97,12 +97,12 @@ void GLAPIENTRY Clear(GLbitfield mask) {
   GLbitfield m = mask & GL_COLOR_BUFFER_BIT;
   if (ctx->fb.depth != nullptr) m |= mask & GL_DEPTH_BUFFER_BIT;
   if (ctx->fb.stencil != nullptr) m |= mask & GL_STENCIL_BUFFER_BIT;
-  if (m != 0) clear_buffers(ctx->fb, cs, m);
+  if (m != 0) clear_buffers(ctx->fb, cs, m, &ctx->workers);
   // GL 2.1 §4.2.3: with FRONT_AND_BACK both colour buffers are cleared.
   if ((m & GL_COLOR_BUFFER_BIT) && ctx->fb.color_also != nullptr) {
     Framebuffer second = ctx->fb;
     second.color = second.color_also;
-    clear_buffers(second, cs, GL_COLOR_BUFFER_BIT);
+    clear_buffers(second, cs, GL_COLOR_BUFFER_BIT, &ctx->workers);
   }
 }
 
