@@ -11,6 +11,7 @@
 #include "geometry/light_eval.h"
 #include "geometry/texcoord.h"
 #include "raster/raster.h"
+#include "raster/workers.h"
 #include "state/draw_read_buffer.h"
 
 namespace pineda {
@@ -49,6 +50,10 @@ DrawCache& current_draw_cache(Context* ctx) {
   }
   return c;
 }
+
+// Draws with at least this many vertices have them transformed and lit by every worker
+// thread; below it, waking the workers costs more than it saves.
+constexpr size_t kShareVertexCount = 4096;
 
 // What the per-vertex loop reads, gathered once per draw.
 struct VertexJob {
@@ -180,10 +185,30 @@ void draw_vertices_once(Context* ctx, GLenum mode, const InputVertex* in, size_t
   job.modes = &rs.modes;
   job.mv = &ctx->modelview.top();
   const bool extra = job.tex_live || rs.modes.point_attenuated;
-  if (lit)
-    extra ? transform_vertices<true, true>(job) : transform_vertices<true, false>(job);
-  else
-    extra ? transform_vertices<false, true>(job) : transform_vertices<false, false>(job);
+  const auto transform = [lit, extra](const VertexJob& j) {
+    if (lit)
+      extra ? transform_vertices<true, true>(j) : transform_vertices<true, false>(j);
+    else
+      extra ? transform_vertices<false, true>(j) : transform_vertices<false, false>(j);
+  };
+  // Vertices are independent of each other, so a large draw's are split into one contiguous
+  // range per worker thread (raster/workers.h). Material changes between Begin and End
+  // (immediate mode, a few vertices) depend on the vertex index: they stay on one thread.
+  const int threads = n >= kShareVertexCount && job.change_count == 0 ? ctx->workers.threads() : 1;
+  if (threads > 1) {
+    auto part = [&](int i) {
+      VertexJob j = job;
+      const size_t first = n * static_cast<size_t>(i) / static_cast<size_t>(threads);
+      const size_t last = n * static_cast<size_t>(i + 1) / static_cast<size_t>(threads);
+      j.in = in + first;
+      j.out = job.out + first;
+      j.n = last - first;
+      transform(j);
+    };
+    ctx->workers.run(part);
+  } else {
+    transform(job);
+  }
 
   // GL 2.1 §5.2, §5.3: in SELECT and FEEDBACK mode the primitives go to selection or
   // feedback instead of the rasterizer.

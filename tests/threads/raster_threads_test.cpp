@@ -88,6 +88,32 @@ void scene_triangles(Rng& rng) {
     }
   }
   glEnd();
+  // A lit draw of more than 4096 vertices: transformed and lit by every worker, each taking a
+  // range of the vertices (geometry/transform.cpp).
+  glEnable(GL_LIGHTING);
+  glEnable(GL_LIGHT0);
+  glEnable(GL_LIGHT1);
+  const float pos1[4] = {static_cast<float>(kW), 0, 200, 1};
+  glLightfv(GL_LIGHT1, GL_POSITION, pos1);
+  glEnable(GL_COLOR_MATERIAL);
+  glEnable(GL_NORMALIZE);
+  glLightModeli(GL_LIGHT_MODEL_COLOR_CONTROL, GL_SEPARATE_SPECULAR_COLOR);
+  glBegin(GL_TRIANGLES);
+  for (int i = 0; i < 2000; ++i) {
+    const float x = rng.range(0, kW), y = rng.range(0, kH);
+    for (int k = 0; k < 3; ++k) {
+      glColor3f(rng.unit(), rng.unit(), rng.unit());
+      glNormal3f(rng.range(-1, 1), rng.range(-1, 1), 1);
+      glVertex3f(x + rng.range(-15, 15), y + rng.range(-15, 15), rng.range(-0.9f, 0.9f));
+    }
+  }
+  glEnd();
+  glLightModeli(GL_LIGHT_MODEL_COLOR_CONTROL, GL_SINGLE_COLOR);
+  glDisable(GL_NORMALIZE);
+  glDisable(GL_COLOR_MATERIAL);
+  glDisable(GL_LIGHT1);
+  glDisable(GL_LIGHT0);
+  glDisable(GL_LIGHTING);
   glShadeModel(GL_FLAT);
   for (int i = 0; i < 6; ++i) {
     glBegin(GL_TRIANGLE_FAN);
