@@ -9,6 +9,7 @@ PACKAGES=(
   libglm-dev             # matrix math outside the hot loops
   libgtest-dev libgmock-dev googletest
   libbenchmark-dev
+  clang libclang-rt-14-dev # scripts/fuzz.sh: libFuzzer, ASan, UBSan runtimes (a short run in the tests)
   valgrind bc            # scripts/bench_instructions.sh: instruction counts per bench scene
   libosmesa6-dev         # Mesa's OSMesa: the conformance oracle (never linked into Pineda)
   libpng-dev zlib1g-dev  # conformance images

@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Quick start, step 2: the tests. Builds Release and runs every ctest test (unit tests and the
 # conformance scenes against OSMesa llvmpipe), then builds with ASan+UBSan and runs the same
-# tests again. .ci/run runs exactly this.
+# tests again, then replays the fuzzer's seed corpus and fuzzes for FUZZ_SECONDS (default 60).
+# .ci/run runs exactly this.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 JOBS=${JOBS:-$(nproc)}
@@ -21,3 +22,6 @@ export UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1
 # The GLX tests also start Xvfb and unmodified programs (glxinfo, libglfw), which are not
 # instrumented and cannot load an instrumented libGL.so.1; they run in the Release half only.
 ctest --test-dir build-asan -j "$JOBS" --output-on-failure -L sanitize -LE glx
+
+echo "== Fuzzing: the seed corpus, then ${FUZZ_SECONDS:-60} s of new inputs (clang, ASan+UBSan)"
+JOBS=$JOBS scripts/fuzz.sh "${FUZZ_SECONDS:-60}"

@@ -151,6 +151,49 @@ struct Ints {
   Block b;
 };
 
+// The six commands of a two-enum parameter family: glFoo{f,i}, glFoo{f,i}v and glGetFoo{f,i}v
+// (Light, TexParameter, TexEnv).
+struct ParamFamily {
+  void(GLAPIENTRY* f)(GLenum, GLenum, GLfloat);
+  void(GLAPIENTRY* i)(GLenum, GLenum, GLint);
+  void(GLAPIENTRY* fv)(GLenum, GLenum, const GLfloat*);
+  void(GLAPIENTRY* iv)(GLenum, GLenum, const GLint*);
+  void(GLAPIENTRY* get_fv)(GLenum, GLenum, GLfloat*);
+  void(GLAPIENTRY* get_iv)(GLenum, GLenum, GLint*);
+};
+
+// One call of `fam` for target t and pname p, chosen by the input: the scalar forms take a
+// float from the input or `int_value`, the vector and query forms exactly `count` values.
+inline void call_param(const Harness& h, Input& in, const ParamFamily& fam, GLenum t, GLenum p,
+                       int64_t count, GLint int_value) {
+  switch (in.u8() % 5) {
+  case 0:
+    fam.f(t, p, in.f());
+    break;
+  case 1:
+    fam.i(t, p, int_value);
+    break;
+  case 2: {
+    Floats v(h, in, count);
+    fam.fv(t, p, v.get());
+    break;
+  }
+  case 3: {
+    Ints v(h, in, count);
+    fam.iv(t, p, v.get());
+    break;
+  }
+  default: {
+    Block v(h, count * 4);
+    if (in.u8() & 1)
+      fam.get_fv(t, p, v.as<GLfloat>());
+    else
+      fam.get_iv(t, p, v.as<GLint>());
+    break;
+  }
+  }
+}
+
 // A count of names (Gen*/Delete*/Prioritize...): small, sometimes negative.
 inline GLsizei name_count(Input& in) {
   const uint8_t v = in.u8();

@@ -99,36 +99,16 @@ int64_t point_count(GLenum p) {
 } // namespace
 
 void op_lighting(Harness& h, Input& in) {
+  static constexpr ParamFamily kLight = {glLightf,  glLighti,     glLightfv,
+                                         glLightiv, glGetLightfv, glGetLightiv};
   switch (in.u8() % 12) {
-  case 0: {
-    const GLenum l = in.e(kLights), p = in.e(kLightParams);
-    glLightf(l, p, in.f());
-    break;
-  }
-  case 1: {
-    const GLenum l = in.e(kLights), p = in.e(kLightParams);
-    glLighti(l, p, in.i());
-    break;
-  }
-  case 2: {
-    const GLenum l = in.e(kLights), p = in.e(kLightParams);
-    Floats v(h, in, light_count(p));
-    glLightfv(l, p, v.get());
-    break;
-  }
-  case 3: {
-    const GLenum l = in.e(kLights), p = in.e(kLightParams);
-    Ints v(h, in, light_count(p));
-    glLightiv(l, p, v.get());
-    break;
-  }
+  case 0:
+  case 1:
+  case 2:
+  case 3:
   case 4: {
     const GLenum l = in.e(kLights), p = in.e(kLightParams);
-    Block v(h, light_count(p) * 4);
-    if (in.u8() & 1)
-      glGetLightfv(l, p, v.as<GLfloat>());
-    else
-      glGetLightiv(l, p, v.as<GLint>());
+    call_param(h, in, kLight, l, p, light_count(p), in.i());
     break;
   }
   case 5: {

@@ -187,67 +187,26 @@ void op_texture_state(Harness& h, Input& in) {
     glAreTexturesResident(n, names.as<GLuint>(), res.as<GLboolean>());
     break;
   }
-  case 7: {
-    const GLenum t = in.e(kTexTargets), p = in.e(kTexParams);
-    glTexParameteri(t, p, static_cast<GLint>(in.e(kTexValues)));
-    break;
-  }
-  case 8: {
-    const GLenum t = in.e(kTexTargets), p = in.e(kTexParams);
-    glTexParameterf(t, p, in.f());
-    break;
-  }
-  case 9: {
-    const GLenum t = in.e(kTexTargets), p = in.e(kTexParams);
-    Floats v(h, in, tex_param_count(p));
-    glTexParameterfv(t, p, v.get());
-    break;
-  }
-  case 10: {
-    const GLenum t = in.e(kTexTargets), p = in.e(kTexParams);
-    Ints v(h, in, tex_param_count(p));
-    glTexParameteriv(t, p, v.get());
-    break;
-  }
+  case 7:
+  case 8:
+  case 9:
+  case 10:
   case 11: {
+    static constexpr ParamFamily kTexParameter = {glTexParameterf,     glTexParameteri,
+                                                  glTexParameterfv,    glTexParameteriv,
+                                                  glGetTexParameterfv, glGetTexParameteriv};
     const GLenum t = in.e(kTexTargets), p = in.e(kTexParams);
-    Block v(h, tex_param_count(p) * 4);
-    if (in.u8() & 1)
-      glGetTexParameterfv(t, p, v.as<GLfloat>());
-    else
-      glGetTexParameteriv(t, p, v.as<GLint>());
+    const auto value = static_cast<GLint>(in.e(kTexValues));
+    call_param(h, in, kTexParameter, t, p, tex_param_count(p), value);
     break;
   }
-  case 12: {
-    const GLenum t = in.e(kEnvTargets), p = in.e(kEnvParams);
-    glTexEnvi(t, p, static_cast<GLint>(in.e(kEnvValues)));
-    break;
-  }
+  case 12:
   case 13: {
+    static constexpr ParamFamily kTexEnv = {glTexEnvf,  glTexEnvi,     glTexEnvfv,
+                                            glTexEnviv, glGetTexEnvfv, glGetTexEnviv};
     const GLenum t = in.e(kEnvTargets), p = in.e(kEnvParams);
-    switch (in.u8() % 4) {
-    case 0:
-      glTexEnvf(t, p, in.f());
-      break;
-    case 1: {
-      Floats v(h, in, env_count(p));
-      glTexEnvfv(t, p, v.get());
-      break;
-    }
-    case 2: {
-      Ints v(h, in, env_count(p));
-      glTexEnviv(t, p, v.get());
-      break;
-    }
-    default: {
-      Block v(h, env_count(p) * 4);
-      if (in.u8() & 1)
-        glGetTexEnvfv(t, p, v.as<GLfloat>());
-      else
-        glGetTexEnviv(t, p, v.as<GLint>());
-      break;
-    }
-    }
+    const auto value = static_cast<GLint>(in.e(kEnvValues));
+    call_param(h, in, kTexEnv, t, p, env_count(p), value);
     break;
   }
   case 14: {
