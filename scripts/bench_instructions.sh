@@ -27,8 +27,10 @@ command -v valgrind >/dev/null || { echo "bench_instructions: valgrind is not in
 [ -x "$RUNNER" ] || { echo "bench_instructions: build $RUNNER first (target pineda_bench_runner)" >&2; exit 2; }
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
+# One thread: the count follows the scene's draw function on the calling thread, and work handed
+# to worker threads would not be counted.
 count() { # lib scene -> instructions
-  LD_LIBRARY_PATH="$1" valgrind --tool=callgrind --callgrind-out-file="$tmp/cg" \
+  PINEDA_THREADS=1 LD_LIBRARY_PATH="$1" valgrind --tool=callgrind --callgrind-out-file="$tmp/cg" \
     --toggle-collect="scene_draw_$2*" "$RUNNER" --scene "$2" --out "$tmp/img.rgba" --reps 1 2>&1 |
     sed -n 's/.*Collected : \([0-9]*\).*/\1/p'
 }
