@@ -173,8 +173,11 @@ void traverse(const TriEdges& te, const FragCtx& ctx, const FragInputs& in, Bloc
   }
 }
 
-void triangle(const DrawCall& dc, const FragCtx& ctx, const PVertex& a, const PVertex& b,
-              const PVertex& c, const PVertex& provoking, bool back_facing) {
+// Inlined into raster_triangle: with one-pixel triangles the call itself is a measurable part
+// of the cost.
+[[gnu::always_inline]] inline void triangle(const DrawCall& dc, const FragCtx& ctx,
+                                            const PVertex& a, const PVertex& b, const PVertex& c,
+                                            const PVertex& provoking, bool back_facing) {
   if (ctx.noop) return;
   const SnappedTri t = snap_triangle(a, b, c);
   if (dc.bands.count > 1) {
