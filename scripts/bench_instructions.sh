@@ -40,8 +40,13 @@ if [ ${#libs[@]} -eq 1 ]; then
 else
   printf '%-24s %16s %16s %9s\n' scene A B "B/A-1"
   for s in "${scenes[@]}"; do
-    a=$(count "${libs[0]}" "$s")
-    b=$(count "${libs[1]}" "$s")
+    a=$(count "${libs[0]}" "$s" || true)
+    b=$(count "${libs[1]}" "$s" || true)
+    if [ -z "$a" ] || [ -z "$b" ] || [ "$a" = 0 ]; then
+      # The runner failed or the scene never entered its draw function with one of the builds.
+      printf '%-24s %16s %16s %9s\n' "$s" "${a:--}" "${b:--}" "-"
+      continue
+    fi
     printf '%-24s %16s %16s %+8.2f%%\n' "$s" "$a" "$b" "$(echo "100 * ($b / $a - 1)" | bc -l)"
   done
 fi
