@@ -2,55 +2,19 @@
 // softpipe render in the same run (scripts/bench.sh). They are registered with the same
 // PINEDA_SCENE macro as the conformance scenes but compiled into their own runner
 // (pineda_bench_runner), so they never slow down the conformance tests.
+#include "bench_geometry.h"
 #include "scene_util.h"
+#include "sweep_common.h"
 
 #include <cmath>
 #include <vector>
 
 using namespace scenes;
+using bench::Mesh;
+using bench::perspective_view;
+using bench::torus;
 
 namespace {
-
-void perspective_view(const Frame& frame, float fovy_tan, float near_plane, float far_plane) {
-  glViewport(0, 0, frame.width, frame.height);
-  glMatrixMode(GL_PROJECTION);
-  glLoadIdentity();
-  const float aspect = static_cast<float>(frame.width) / static_cast<float>(frame.height);
-  glFrustum(-fovy_tan * aspect * near_plane, fovy_tan * aspect * near_plane, -fovy_tan * near_plane,
-            fovy_tan * near_plane, near_plane, far_plane);
-  glMatrixMode(GL_MODELVIEW);
-  glLoadIdentity();
-}
-
-// A torus of rings x sides quads as an indexed triangle list: positions and normals
-// interleaved (x y z nx ny nz).
-struct Mesh {
-  std::vector<float> vn;
-  std::vector<unsigned> indices;
-};
-
-Mesh torus(int rings, int sides, float major, float minor) {
-  Mesh m;
-  m.vn.reserve(static_cast<size_t>((rings + 1) * (sides + 1) * 6));
-  for (int i = 0; i <= rings; ++i) {
-    const float u = 2.0f * kPi * static_cast<float>(i) / static_cast<float>(rings);
-    for (int j = 0; j <= sides; ++j) {
-      const float v = 2.0f * kPi * static_cast<float>(j) / static_cast<float>(sides);
-      const float nx = std::cos(u) * std::cos(v), ny = std::sin(u) * std::cos(v), nz = std::sin(v);
-      m.vn.insert(m.vn.end(), {(major + minor * std::cos(v)) * std::cos(u),
-                               (major + minor * std::cos(v)) * std::sin(u), minor * std::sin(v),
-                               nx, ny, nz});
-    }
-  }
-  for (int i = 0; i < rings; ++i) {
-    for (int j = 0; j < sides; ++j) {
-      const unsigned a = static_cast<unsigned>(i * (sides + 1) + j), b = a + 1;
-      const unsigned c = a + static_cast<unsigned>(sides + 1), d = c + 1;
-      m.indices.insert(m.indices.end(), {a, c, b, b, c, d});
-    }
-  }
-  return m;
-}
 
 void light_setup() {
   glEnable(GL_LIGHTING);
@@ -135,8 +99,10 @@ PINEDA_SCENE(bench_tiny_tris, "200k triangles of about one pixel, random colours
   glEnd();
 }
 
-PINEDA_SCENE(bench_overdraw_depth, "12 full-screen layers at 1024x768 with depth test, "
-             "front to back and back to front", .width = 1024, .height = 768) {
+PINEDA_SCENE(bench_overdraw_depth,
+             "12 full-screen layers at 1024x768 with depth test, "
+             "front to back and back to front",
+             .width = 1024, .height = 768) {
   clear_frame(0, 0, 0);
   glEnable(GL_DEPTH_TEST);
   glDepthFunc(GL_LESS);
@@ -157,8 +123,10 @@ PINEDA_SCENE(bench_overdraw_depth, "12 full-screen layers at 1024x768 with depth
   glDisable(GL_DEPTH_TEST);
 }
 
-PINEDA_SCENE(bench_lit_mesh, "300k-triangle lit torus knot of tori, vertex arrays, two lights, "
-             "depth test, 640x480", .width = 640, .height = 480) {
+PINEDA_SCENE(bench_lit_mesh,
+             "300k-triangle lit torus knot of tori, vertex arrays, two lights, "
+             "depth test, 640x480",
+             .width = 640, .height = 480) {
   static const Mesh mesh = torus(500, 300, 1.0f, 0.35f); // 300k triangles
   clear_frame(0.05f, 0.05f, 0.1f);
   perspective_view(frame, 0.5f, 1.0f, 20.0f);
@@ -178,65 +146,18 @@ PINEDA_SCENE(bench_lit_mesh, "300k-triangle lit torus knot of tori, vertex array
   glDisable(GL_DEPTH_TEST);
 }
 
-PINEDA_SCENE(bench_textured_mesh, "Mipmapped, trilinear textured ground plane and torus, "
-             "perspective, 640x480", .width = 640, .height = 480) {
-  static const Mesh mesh = torus(120, 60, 1.0f, 0.35f);
-  static std::vector<unsigned char> levels[9];
-  if (levels[0].empty()) {
-    for (int l = 0, size = 256; l < 9; ++l, size /= 2) {
-      levels[l].resize(static_cast<size_t>(size * size * 4));
-      for (int y = 0; y < size; ++y)
-        for (int x = 0; x < size; ++x) {
-          unsigned char* p = &levels[l][static_cast<size_t>((y * size + x) * 4)];
-          const bool check = ((x * 8 / size) + (y * 8 / size)) % 2 == 0;
-          p[0] = static_cast<unsigned char>(check ? 230 : 40 + 20 * l);
-          p[1] = static_cast<unsigned char>((x * 255) / size);
-          p[2] = static_cast<unsigned char>(check ? 60 : (y * 255) / size);
-          p[3] = 255;
-        }
-    }
-  }
-  clear_frame(0.3f, 0.4f, 0.6f);
-  perspective_view(frame, 0.6f, 0.5f, 60.0f);
-  glEnable(GL_DEPTH_TEST);
-  GLuint tex = 0;
-  glGenTextures(1, &tex);
-  glBindTexture(GL_TEXTURE_2D, tex);
-  for (int l = 0, size = 256; l < 9; ++l, size /= 2)
-    glTexImage2D(GL_TEXTURE_2D, l, GL_RGBA, size, size, 0, GL_RGBA, GL_UNSIGNED_BYTE,
-                 levels[l].data());
-  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
-  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
-  glEnable(GL_TEXTURE_2D);
-  glTexEnvi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_MODULATE);
-  glColor3f(1, 1, 1);
-  glBegin(GL_QUADS);
-  glTexCoord2f(0, 0);
-  glVertex3f(-30, -1.5f, -50);
-  glTexCoord2f(24, 0);
-  glVertex3f(30, -1.5f, -50);
-  glTexCoord2f(24, 24);
-  glVertex3f(30, -1.5f, 0);
-  glTexCoord2f(0, 24);
-  glVertex3f(-30, -1.5f, 0);
-  glEnd();
-  glTranslatef(0, 0, -5);
-  glRotatef(60, 1, 0.3f, 0);
-  glBegin(GL_TRIANGLES);
-  for (unsigned idx : mesh.indices) {
-    const float* v = &mesh.vn[idx * 6];
-    glTexCoord2f(v[0] * 2.0f, v[1] * 2.0f + v[2]);
-    glColor3f(0.6f + 0.4f * v[3], 0.6f + 0.4f * v[4], 0.8f);
-    glVertex3fv(v);
-  }
-  glEnd();
-  glDisable(GL_TEXTURE_2D);
-  glDeleteTextures(1, &tex);
-  glDisable(GL_DEPTH_TEST);
+PINEDA_SCENE(bench_textured_mesh,
+             "Mipmapped, trilinear textured ground plane and torus, "
+             "perspective, 640x480",
+             .width = 640, .height = 480) {
+  // The accurate variant of the sweep's textured family (sweep_scenes.cpp) at 640x480.
+  sweep::draw_textured_accurate(frame);
 }
 
-PINEDA_SCENE(bench_immediate, "50k smooth triangles through glBegin/glEnd, one Begin per "
-             "triangle, depth test", .width = 512, .height = 512) {
+PINEDA_SCENE(bench_immediate,
+             "50k smooth triangles through glBegin/glEnd, one Begin per "
+             "triangle, depth test",
+             .width = 512, .height = 512) {
   clear_frame(0, 0, 0);
   glEnable(GL_DEPTH_TEST);
   Rng rng(11);
@@ -254,8 +175,10 @@ PINEDA_SCENE(bench_immediate, "50k smooth triangles through glBegin/glEnd, one B
   glDisable(GL_DEPTH_TEST);
 }
 
-PINEDA_SCENE(bench_gears_lists, "glxgears' three gears compiled into display lists and drawn "
-             "from them 20 times, lit, depth test, 640x480", .width = 640, .height = 480) {
+PINEDA_SCENE(bench_gears_lists,
+             "glxgears' three gears compiled into display lists and drawn "
+             "from them 20 times, lit, depth test, 640x480",
+             .width = 640, .height = 480) {
   clear_frame(0, 0, 0);
   perspective_view(frame, 0.4f, 5.0f, 60.0f);
   glTranslatef(0, 0, -40);
@@ -267,7 +190,8 @@ PINEDA_SCENE(bench_gears_lists, "glxgears' three gears compiled into display lis
   glLightfv(GL_LIGHT0, GL_POSITION, pos);
   const GLfloat colors[3][4] = {{0.8f, 0.1f, 0.0f, 1}, {0.0f, 0.8f, 0.2f, 1}, {0.2f, 0.2f, 1, 1}};
   const GLuint base = glGenLists(3);
-  const float params[3][5] = {{1, 4, 1, 20, 0.7f}, {0.5f, 2, 2, 10, 0.7f}, {1.3f, 2, 0.5f, 10, 0.7f}};
+  const float params[3][5] = {
+      {1, 4, 1, 20, 0.7f}, {0.5f, 2, 2, 10, 0.7f}, {1.3f, 2, 0.5f, 10, 0.7f}};
   for (int g = 0; g < 3; ++g) {
     glNewList(base + static_cast<GLuint>(g), GL_COMPILE);
     glMaterialfv(GL_FRONT, GL_AMBIENT_AND_DIFFUSE, colors[g]);

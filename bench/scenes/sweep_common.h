@@ -1,4 +1,5 @@
-// What the scaling scenes (scaling_scenes.cpp) borrow from the sweep scenes (sweep_scenes.cpp).
+// What the scaling and bench scenes (scaling_scenes.cpp, bench_scenes.cpp) borrow from the sweep
+// scenes (sweep_scenes.cpp).
 #pragma once
 
 #include "scene.h"

@@ -10,53 +10,19 @@
 // only the bench_ scenes.
 #include "sweep_common.h"
 
+#include "bench_geometry.h"
+
 #include "scene_util.h"
 
 #include <cmath>
 #include <vector>
 
 using namespace scenes;
+using bench::Mesh;
+using bench::perspective_view;
+using bench::torus;
 
 namespace {
-
-void perspective_view(const Frame& frame, float fovy_tan, float near_plane, float far_plane) {
-  glViewport(0, 0, frame.width, frame.height);
-  glMatrixMode(GL_PROJECTION);
-  glLoadIdentity();
-  const float aspect = static_cast<float>(frame.width) / static_cast<float>(frame.height);
-  glFrustum(-fovy_tan * aspect * near_plane, fovy_tan * aspect * near_plane, -fovy_tan * near_plane,
-            fovy_tan * near_plane, near_plane, far_plane);
-  glMatrixMode(GL_MODELVIEW);
-  glLoadIdentity();
-}
-
-// Torus as interleaved positions and normals (x y z nx ny nz) and an indexed triangle list.
-struct Mesh {
-  std::vector<float> vn;
-  std::vector<unsigned> indices;
-};
-
-Mesh torus(int rings, int sides, float major, float minor) {
-  Mesh m;
-  for (int i = 0; i <= rings; ++i) {
-    const float u = 2.0f * kPi * static_cast<float>(i) / static_cast<float>(rings);
-    for (int j = 0; j <= sides; ++j) {
-      const float v = 2.0f * kPi * static_cast<float>(j) / static_cast<float>(sides);
-      const float nx = std::cos(u) * std::cos(v), ny = std::sin(u) * std::cos(v), nz = std::sin(v);
-      m.vn.insert(m.vn.end(),
-                  {(major + minor * std::cos(v)) * std::cos(u),
-                   (major + minor * std::cos(v)) * std::sin(u), minor * std::sin(v), nx, ny, nz});
-    }
-  }
-  for (int i = 0; i < rings; ++i) {
-    for (int j = 0; j < sides; ++j) {
-      const unsigned a = static_cast<unsigned>(i * (sides + 1) + j), b = a + 1;
-      const unsigned c = a + static_cast<unsigned>(sides + 1), d = c + 1;
-      m.indices.insert(m.indices.end(), {a, c, b, b, c, d});
-    }
-  }
-  return m;
-}
 
 // --- Textured family ---------------------------------------------------------------------
 
