@@ -206,6 +206,16 @@ inline GLuint name(Input& in) {
   return v < 240 ? v % 12 : in.u32();
 }
 
+// `n` names from the input, exact size (Delete*, PrioritizeTextures, AreTexturesResident).
+struct Names {
+  Names(const Harness& h, Input& in, GLsizei n) : b(h, n > 0 ? n * 4 : 0) {
+    for (GLsizei k = 0; k < n; ++k)
+      b.as<GLuint>()[k] = name(in);
+  }
+  GLuint* get() { return b.as<GLuint>(); }
+  Block b;
+};
+
 // The largest element index every enabled client-memory array can supply (gl_fuzzer.cpp).
 int64_t client_limit(const Harness& h);
 // The pixel-store state of one direction, read back from the GL (fuzz_ops_pixel.cpp).

@@ -419,10 +419,8 @@ void op_queries2(Harness& h, Input& in) {
   }
   case 1: {
     const GLsizei n = name_count(in);
-    Block names(h, n > 0 ? n * 4 : 0);
-    for (GLsizei k = 0; k < n; ++k)
-      names.as<GLuint>()[k] = name(in);
-    glDeleteQueries(n, names.as<GLuint>());
+    Names names(h, in, n);
+    glDeleteQueries(n, names.get());
     break;
   }
   case 2:

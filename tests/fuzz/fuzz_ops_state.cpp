@@ -154,10 +154,8 @@ void op_texture_state(Harness& h, Input& in) {
   }
   case 1: {
     const GLsizei n = name_count(in);
-    Block names(h, n > 0 ? n * 4 : 0);
-    for (GLsizei k = 0; k < n; ++k)
-      names.as<GLuint>()[k] = name(in);
-    glDeleteTextures(n, names.as<GLuint>());
+    Names names(h, in, n);
+    glDeleteTextures(n, names.get());
     break;
   }
   case 2:
@@ -171,20 +169,16 @@ void op_texture_state(Harness& h, Input& in) {
     break;
   case 5: {
     const GLsizei n = name_count(in);
-    Block names(h, n > 0 ? n * 4 : 0), prio(h, n > 0 ? n * 4 : 0);
-    for (GLsizei k = 0; k < n; ++k) {
-      names.as<GLuint>()[k] = name(in);
-      prio.as<GLfloat>()[k] = in.f();
-    }
-    glPrioritizeTextures(n, names.as<GLuint>(), prio.as<GLfloat>());
+    Names names(h, in, n);
+    Floats prio(h, in, n > 0 ? n : 0);
+    glPrioritizeTextures(n, names.get(), prio.get());
     break;
   }
   case 6: {
     const GLsizei n = name_count(in);
-    Block names(h, n > 0 ? n * 4 : 0), res(h, n > 0 ? n : 0);
-    for (GLsizei k = 0; k < n; ++k)
-      names.as<GLuint>()[k] = name(in);
-    glAreTexturesResident(n, names.as<GLuint>(), res.as<GLboolean>());
+    Names names(h, in, n);
+    Block res(h, n > 0 ? n : 0);
+    glAreTexturesResident(n, names.get(), res.as<GLboolean>());
     break;
   }
   case 7:
