@@ -380,11 +380,11 @@ void draw_primitives(const DrawCall& dc, GLenum mode, const PVertex* verts, cons
     frag = &local;
   }
   frag->samples_passed = 0;
-  if (dc.workers != nullptr && !frag->noop && verts != nullptr &&
-      worth_sharing(*dc.state, *frag, mode, verts, indices, count)) {
-    const int n = dc.workers->threads();
-    if (n > 1) return draw_shared(dc, *frag, n, mode, verts, indices, count);
-  }
+  // The thread count first: with one thread (PINEDA_THREADS=1) no draw pays for the estimate.
+  const int n = dc.workers != nullptr ? dc.workers->threads() : 1;
+  if (n > 1 && !frag->noop && verts != nullptr &&
+      worth_sharing(*dc.state, *frag, mode, verts, indices, count))
+    return draw_shared(dc, *frag, n, mode, verts, indices, count);
   DrawCall prepared = dc;
   prepared.frag = frag;
   float stipple_counter = 0.0f;

@@ -16,6 +16,12 @@ void validate_state(Context* ctx);
 // (kAllTexUnits-style bit mask); validates the state.
 uint32_t input_tex_units(Context* ctx);
 
+// Appends to ctx->imm, the primitive between Begin and End, a vertex with the current
+// attributes (colour, normal, secondary colour, fog coordinate, edge flag and the texture
+// coordinates of the units in ctx->imm_tex_units) and returns it; the caller sets its
+// position (begin_end.cpp; glVertex and the evaluators).
+InputVertex& append_current_vertex(Context* ctx);
+
 // Transform `n` vertices and draw them in `mode`; indices (optional) select among them.
 void draw_vertices(Context* ctx, GLenum mode, const InputVertex* verts, size_t n,
                    const uint32_t* indices, size_t count);

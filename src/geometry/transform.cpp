@@ -31,10 +31,6 @@ inline void add_secondary(float* attr, bool back) {
       attr[kAttrBackColor + c] += attr[kAttrBackColor2 + c];
 }
 
-} // namespace
-
-namespace {
-
 // The clip planes and the fragment stage's setup for the current state and framebuffer,
 // rebuilt only when either changed since the last draw.
 DrawCache& current_draw_cache(Context* ctx) {

@@ -10,12 +10,10 @@ namespace pineda {
 
 namespace {
 
-inline void vertex(float x, float y, float z, float w) {
-  Context* ctx = current_context();
-  // GL 2.1 §2.7: a Vertex outside Begin/End has undefined effect; Pineda ignores it.
-  if (ctx == nullptr || ctx->begin_mode == kOutsideBeginEnd) return;
+// A vertex appended to the primitive being assembled with the current attributes (GL 2.1
+// §2.7); the caller sets its position. Inline here: glVertex is the hottest entry point.
+inline InputVertex& push_current_vertex(Context* ctx) {
   InputVertex& v = ctx->imm.emplace_back();
-  v.pos[0] = x, v.pos[1] = y, v.pos[2] = z, v.pos[3] = w;
   for (int i = 0; i < 4; ++i)
     v.color[i] = ctx->cur_color[i];
   for (int i = 0; i < 3; ++i)
@@ -31,6 +29,15 @@ inline void vertex(float x, float y, float z, float w) {
     for (int i = 0; i < 4; ++i)
       v.tex[u][i] = ctx->cur_tex[u][i];
   }
+  return v;
+}
+
+inline void vertex(float x, float y, float z, float w) {
+  Context* ctx = current_context();
+  // GL 2.1 §2.7: a Vertex outside Begin/End has undefined effect; Pineda ignores it.
+  if (ctx == nullptr || ctx->begin_mode == kOutsideBeginEnd) return;
+  InputVertex& v = push_current_vertex(ctx);
+  v.pos[0] = x, v.pos[1] = y, v.pos[2] = z, v.pos[3] = w;
 }
 
 inline void color(float r, float g, float b, float a) {
@@ -78,6 +85,10 @@ template <typename T> void rect(T x1, T y1, T x2, T y2) {
 }
 
 } // namespace
+
+InputVertex& append_current_vertex(Context* ctx) {
+  return push_current_vertex(ctx);
+}
 
 namespace exec {
 

@@ -15,6 +15,7 @@
 
 #include "core/api_util.h"
 #include "dispatch.h"
+#include "geometry/geometry.h"
 #include "state/eval_state.h"
 
 namespace pineda {
@@ -126,23 +127,6 @@ int vertex_kind(const bool* enabled) {
   return enabled[kEvalVertex4] ? kEvalVertex4 : enabled[kEvalVertex3] ? kEvalVertex3 : -1;
 }
 
-// A vertex carrying the current attributes, appended to the primitive being assembled.
-InputVertex& new_vertex(Context* ctx) {
-  InputVertex& v = ctx->imm.emplace_back();
-  for (int i = 0; i < 4; ++i)
-    v.color[i] = ctx->cur_color[i];
-  for (int i = 0; i < 3; ++i)
-    v.normal[i] = ctx->cur_normal[i];
-  for (int u = 0; u < kMaxTexUnits; ++u)
-    for (int i = 0; i < 4; ++i)
-      v.tex[u][i] = ctx->cur_tex[u][i];
-  for (int i = 0; i < 3; ++i)
-    v.color2[i] = ctx->cur_color2[i];
-  v.fog = ctx->texpipe.cur_fog_coord;
-  v.edge = ctx->cur_edge ? 1u : 0u;
-  return v;
-}
-
 // §5.1 EvalCoord1: every enabled one-dimensional map is evaluated; the Vertex comes last, and
 // without a vertex map nothing is issued that could be observed (the colour, normal and
 // texture coordinate commands do not change current state). A Vertex outside Begin/End has no
@@ -151,7 +135,7 @@ void eval_coord1(Context* ctx, double u) {
   const EvalState& e = ctx->eval;
   const int vk = vertex_kind(e.map1_enabled);
   if (vk < 0 || ctx->begin_mode == kOutsideBeginEnd) return;
-  InputVertex& v = new_vertex(ctx);
+  InputVertex& v = append_current_vertex(ctx);
   if (e.map1_enabled[kEvalColor4]) eval_map1(e.map1[kEvalColor4], 4, u, v.color);
   if (e.map1_enabled[kEvalNormal]) eval_map1(e.map1[kEvalNormal], 3, u, v.normal);
   if (const int tk = tex_kind(e.map1_enabled); tk >= 0) {
@@ -176,7 +160,7 @@ void eval_coord2(Context* ctx, double u, double w) {
   const EvalState& e = ctx->eval;
   const int vk = vertex_kind(e.map2_enabled);
   if (vk < 0 || ctx->begin_mode == kOutsideBeginEnd) return;
-  InputVertex& v = new_vertex(ctx);
+  InputVertex& v = append_current_vertex(ctx);
   double val[4];
   if (e.map2_enabled[kEvalColor4]) {
     eval_map2(e.map2[kEvalColor4], 4, u, w, val, nullptr, nullptr);
