@@ -25,6 +25,7 @@
 #include <algorithm>
 #include <array>
 #include <bit>
+#include <cmath>
 #include <cstring>
 #include <utility>
 
@@ -66,6 +67,19 @@ struct Row {
 struct RowMask {
   LaneI v[kParts];
 };
+
+// Rows move to and from memory part by part: GCC copies a whole Row (a struct) through the
+// stack, which stalls the 256-bit loads that follow two 128-bit stores.
+inline Row row_load(const void* p) {
+  Row r;
+  for (int h = 0; h < kParts; ++h)
+    std::memcpy(&r.v[h], static_cast<const char*>(p) + sizeof(LaneU) * h, sizeof(LaneU));
+  return r;
+}
+inline void row_store(void* p, const Row& r) {
+  for (int h = 0; h < kParts; ++h)
+    std::memcpy(static_cast<char*>(p) + sizeof(LaneU) * h, &r.v[h], sizeof(LaneU));
+}
 
 inline uint32_t row_lane(const Row& r, int i) {
   return r.v[i / kLanes][i % kLanes];
@@ -313,8 +327,8 @@ template <ColorFormat F> void unpack_pixel(uint32_t px, bool has_alpha, uint8_t 
 template <ColorFormat F>
 void blend_generic_row(const FragCtx& ctx, unsigned m, Row& s, const Row& d) {
   alignas(32) uint32_t sp[N], dp[N];
-  std::memcpy(sp, &s, sizeof(sp));
-  std::memcpy(dp, &d, sizeof(dp));
+  row_store(sp, s);
+  row_store(dp, d);
   if (ctx.blend_fixed) {
     for (int h = 0; h < 2; ++h) {
       u32x4 sv, dv;
@@ -333,7 +347,7 @@ void blend_generic_row(const FragCtx& ctx, unsigned m, Row& s, const Row& d) {
       sp[i] = pack_pixel<F>(oc[0], oc[1], oc[2], oc[3]);
     }
   }
-  std::memcpy(&s, sp, sizeof(sp));
+  s = row_load(sp);
 }
 
 // The plane's z at the eight pixels (ox + di + i, oy + dj) in depth-buffer units, clamped to
@@ -391,8 +405,7 @@ template <DepthPath D>
   const bool write = D != DepthPath::Generic || ctx.depth_write;
   if (bx + N <= ctx.fb_width) {
     // The whole row lies in the buffer: test all eight lanes and keep the covered ones.
-    Row old;
-    std::memcpy(&old, d, sizeof(old));
+    Row old = row_load(d);
     RowMask pass = row_mask(m);
     for (int h = 0; h < kParts; ++h) {
       if constexpr (D == DepthPath::LessWrite) {
@@ -411,7 +424,7 @@ template <DepthPath D>
     if (write && bits != 0) {
       for (int h = 0; h < kParts; ++h)
         old.v[h] = pass.v[h] ? zv.v[h] : old.v[h];
-      std::memcpy(d, &old, sizeof(old));
+      row_store(d, old);
     }
     return bits;
   }
@@ -435,6 +448,66 @@ template <DepthPath D>
     }
   }
   return bits;
+}
+
+// The depth test (GL 2.1 §4.1.6) of a fully covered block at once: true when no fragment of
+// the block at (bx, by) can pass, so that the block loop can drop the block before any other
+// work. It reads the depth buffer itself and keeps no state, so every other writer of the
+// buffer (clears, DrawPixels, CopyPixels, other draws) is seen as it is.
+//
+// Each fragment's stored-format z is q(z) = trunc(clamp(z, 0, max) + 0.5) of the plane value
+// z computed in depth_values, and q is non-decreasing. Over the block the plane's exact values
+// lie between its values at two corners; the computed ones differ from the exact ones by a few
+// rounding errors of the terms' magnitudes (at most 2^-49 of their sum here), which the margin
+// covers. So every fragment's value is at least q(lo) and at most q(hi): with LESS all fail
+// when no stored value exceeds q(lo), with LEQUAL when all are below it, and GREATER and
+// GEQUAL mirror that with q(hi). Other functions (and non-finite planes) never skip.
+template <DepthPath D>
+inline bool block_fails_depth(const FragCtx& ctx, const FragInputs& in, int bx, int by) {
+  const unsigned func = D == DepthPath::LessWrite     ? 1u
+                        : D == DepthPath::LequalWrite ? 3u
+                                                      : ctx.depth_func;
+  const bool below = func == 1u || func == 3u; // LESS, LEQUAL
+  if (!below && func != 4u && func != 6u) return false;
+  const PlaneD zp = in.z;
+  const double a = zp.v0, b = (bx - in.ox) * zp.dx, c = (by - in.oy) * zp.dy;
+  const double ex = (N - 1) * zp.dx, ey = (N - 1) * zp.dy;
+  const double size = std::fabs(a) + std::fabs(b) + std::fabs(c) + std::fabs(ex) + std::fabs(ey);
+  if (!(size < 1e300)) return false;
+  const double margin = size * 0x1p-40;
+  const double z = below ? a + b + c + std::min(ex, 0.0) + std::min(ey, 0.0) - margin
+                         : a + b + c + std::max(ex, 0.0) + std::max(ey, 0.0) + margin;
+  const double zc = std::min(std::max(z, 0.0), ctx.depth_max) + 0.5;
+  const uint32_t q = ctx.depth_max < 2147483648.0 ? static_cast<uint32_t>(static_cast<int32_t>(zc))
+                                                  : static_cast<uint32_t>(static_cast<int64_t>(zc));
+  // The largest (LESS, LEQUAL) or smallest (GREATER, GEQUAL) stored value of the block.
+  const uint32_t* d = ctx.depth + static_cast<ptrdiff_t>(by) * ctx.depth_stride + bx;
+  Row acc = row_load(d);
+  for (int j = 1; j < N; ++j) {
+    const Row r = row_load(d + j * ctx.depth_stride);
+    for (int h = 0; h < kParts; ++h)
+      acc.v[h] =
+          below ? (acc.v[h] > r.v[h] ? acc.v[h] : r.v[h]) : (acc.v[h] < r.v[h] ? acc.v[h] : r.v[h]);
+  }
+  const LaneU qv = LaneU{} + q;
+  RowMask pass;
+  for (int h = 0; h < kParts; ++h) {
+    switch (func) {
+    case 1u:
+      pass.v[h] = acc.v[h] > qv;
+      break;
+    case 3u:
+      pass.v[h] = acc.v[h] >= qv;
+      break;
+    case 4u:
+      pass.v[h] = acc.v[h] < qv;
+      break;
+    default:
+      pass.v[h] = acc.v[h] <= qv;
+      break;
+    }
+  }
+  return mask_bits(pass) == 0;
 }
 
 // Alpha test of one row (GL 2.1 §4.1.4): the fragment alpha as the 8-bit value it would be
@@ -546,34 +619,32 @@ template <ColorFormat F, ColorPath C, BlendPath B, bool X>
   const bool logic = X && ctx.key.logic_op;
   const bool reads_dst = kReadsDst || logic;
   if (m == 0xffu && !reads_dst) {
-    std::memcpy(row, &s, sizeof(s));
+    row_store(row, s);
     return;
   }
   if (in_buffer) {
     // The whole row lies in the buffer: compute all eight lanes and select the covered ones.
-    Row dst;
-    std::memcpy(&dst, row, sizeof(dst));
+    Row dst = row_load(row);
     combine_row4<F, C, B>(ctx, m, logic, s, dst);
     if (m == 0xffu) {
-      std::memcpy(row, &s, sizeof(s));
+      row_store(row, s);
       return;
     }
     const RowMask lanes = row_mask(m);
     for (int h = 0; h < kParts; ++h)
       dst.v[h] = lanes.v[h] ? s.v[h] : dst.v[h];
-    std::memcpy(row, &dst, sizeof(dst));
+    row_store(row, dst);
     return;
   }
   // The last block of a row whose width is not a multiple of 8: fragment by fragment.
-  Row dst;
   alignas(32) uint32_t tmp[N] = {};
   if (reads_dst) {
     for (int i = 0; i < N; ++i)
       if ((m >> i) & 1u) std::memcpy(&tmp[i], row + 4 * i, 4);
   }
-  std::memcpy(&dst, tmp, sizeof(dst));
+  const Row dst = row_load(tmp);
   combine_row4<F, C, B>(ctx, m, logic, s, dst);
-  std::memcpy(tmp, &s, sizeof(tmp));
+  row_store(tmp, s);
   for (int i = 0; i < N; ++i)
     if ((m >> i) & 1u) std::memcpy(row + 4 * i, &tmp[i], 4);
 }
@@ -582,7 +653,7 @@ template <ColorFormat F, ColorPath C, BlendPath B, bool X>
 template <ColorPath C, BlendPath B, bool X>
 void write_row3(const FragCtx& ctx, uint8_t* row, unsigned m, const Row& s) {
   alignas(32) uint32_t sp[N];
-  std::memcpy(sp, &s, sizeof(sp));
+  row_store(sp, s);
   uint8_t keep[4];
   std::memcpy(keep, &ctx.color_keep, 4);
   for (int i = 0; i < N; ++i) {
@@ -622,6 +693,14 @@ void block_loop(const FragCtx& ctx, const FragInputs& in, int bx, int by, uint64
   using L = Layout<F>;
   // Pixels travel packed in the format's byte order; RGB8 rows are packed as RGBA8.
   constexpr ColorFormat P = L::bpp == 4 ? F : ColorFormat::RGBA8;
+  // A fully covered block that the depth test rejects whole (hidden surfaces drawn after what
+  // hides them) costs one pass over its stored depths. The stencil test must still see its
+  // fragments (depth-fail updates); the alpha test and sample counting need not.
+  if constexpr (D != DepthPath::Off) {
+    if (mask == ~uint64_t{0} && (!X || !ctx.key.stencil_test) &&
+        block_fails_depth<D>(ctx, in, bx, by))
+      return;
+  }
   [[maybe_unused]] Row const_row{};
   [[maybe_unused]] SmoothPlanes<P> smooth;
   if constexpr (S == ShadePath::Smooth) smooth.init(in);
