@@ -47,6 +47,14 @@ struct FragInputs {
   const ShadeInputs* shade = nullptr;     // planes for ShadePath::PerFragment
 };
 
+// Whether this build has the AVX2 instances of the block loops (fragment_ops_avx2.cpp), which
+// simd_level.h chooses at run time: x86-64 with GCC or Clang.
+#if defined(__x86_64__) && defined(__GNUC__)
+#define PINEDA_HAVE_AVX2_BLOCKS 1
+#else
+#define PINEDA_HAVE_AVX2_BLOCKS 0
+#endif
+
 struct FragCtx;
 using BlockFn = void (*)(const FragCtx& ctx, const FragInputs& in, int bx, int by,
                          uint64_t mask);
@@ -95,8 +103,13 @@ struct FragCtx {
 // Fills ctx for one draw: the key, the surfaces and the selected block loops.
 void prepare_fragments(const RasterState& rs, const Framebuffer& fb, FragCtx& ctx);
 
-// The block loop for a key and shade path (exposed for tests).
+// The block loop for a key and shade path at the current simd_level() (exposed for tests).
 BlockFn select_block_fn(const StateKey& key, ShadePath shade);
+
+// The same from the baseline instances and, when PINEDA_HAVE_AVX2_BLOCKS, from the AVX2 ones
+// (to be called only when the processor has AVX2, BMI1 and BMI2: simd_level.h).
+BlockFn select_block_fn_baseline(const StateKey& key, ShadePath shade);
+BlockFn select_block_fn_avx2(const StateKey& key, ShadePath shade);
 
 // Mask of the pixels of the block at (bx, by) inside the inclusive rectangle [x0,x1]x[y0,y1].
 inline uint64_t rect_block_mask(int x0, int y0, int x1, int y1, int bx, int by) {

@@ -73,17 +73,19 @@ inline Edges32 make_edges32(const TriEdges& te) {
   return v;
 }
 
-inline uint64_t partial_mask32(const Edges32& v, const int64_t e[3]) {
+// Rows r0..r1 of the block only (the rows the bounding box reaches; the others are masked off
+// by the caller anyway): one-pixel triangles then test one or two rows, not eight.
+inline uint64_t partial_mask32(const Edges32& v, const int64_t e[3], int r0, int r1) {
   i32x4 row[3];
   for (int i = 0; i < 3; ++i)
-    row[i] = i32x4{} + static_cast<int32_t>(e[i]);
+    row[i] = i32x4{} + static_cast<int32_t>(e[i] + r0 * v.sy[i]);
   const i32x4 zero = {};
   uint64_t mask = 0;
-  for (int r = 0; r < kBlockSize; ++r) {
+  for (int r = r0; r <= r1; ++r) {
     const i32x4 lo = (row[0] + v.lane_lo[0]) | (row[1] + v.lane_lo[1]) | (row[2] + v.lane_lo[2]);
     const i32x4 hi = (row[0] + v.lane_hi[0]) | (row[1] + v.lane_hi[1]) | (row[2] + v.lane_hi[2]);
     mask |= static_cast<uint64_t>(lane_bits(lo >= zero, hi >= zero)) << (8 * r);
-    if (r + 1 < kBlockSize) // stay within the bound: no step past the last row
+    if (r < r1) // stay within the bound: no step past the last row
       for (int i = 0; i < 3; ++i)
         row[i] += v.sy[i];
   }
@@ -158,8 +160,8 @@ void traverse(const TriEdges& te, const FragCtx& ctx, const FragInputs& in, Bloc
           mask = rect_block_mask(te.minx, te.miny, te.maxx, te.maxy, bx, by);
         } else if (e32.usable && std::abs(e[0]) < e32.limit[0] && std::abs(e[1]) < e32.limit[1] &&
                    std::abs(e[2]) < e32.limit[2]) {
-          mask =
-              partial_mask32(e32, e) & rect_block_mask(te.minx, te.miny, te.maxx, te.maxy, bx, by);
+          mask = partial_mask32(e32, e, r0, r1) &
+                 rect_block_mask(te.minx, te.miny, te.maxx, te.maxy, bx, by);
         } else {
           const int c0 = std::max(te.minx - bx, 0), c1 = std::min(te.maxx - bx, B - 1);
           mask = partial_mask64(te, e, c0, c1, r0, r1);

@@ -1,0 +1,865 @@
+// The specialized block loops of the per-fragment operations (GL 2.1 §4.1), written once for
+// two instruction sets. fragment_ops.cpp includes this file for the baseline build (SSE2 on
+// x86-64, NEON on AArch64), fragment_ops_avx2.cpp includes it again with PINEDA_BLOCK_AVX2
+// set, inside a region compiled for AVX2. Everything here lives in an unnamed namespace, so
+// each translation unit has its own instances and the two never meet at link time.
+//
+// One block loop handles up to 8x8 fragments of one primitive, row by row: depth test and
+// depth write for the covered fragments of the row (GL 2.1 §4.1.6), then colour
+// (perspective-correct or constant), blending (§4.1.8) and the masked store (§4.2.2) for the
+// fragments that survived. Every choice that depends on state is a template parameter; what
+// is left at run time are values (blend factors, generic depth function, colour keep mask).
+// The scissor test (§4.1.2) costs nothing here: it narrows the clip rectangle the
+// rasterizers already respect. The alpha test (§4.1.4), the stencil test (§4.1.5) and the
+// logical operation (§4.1.10) live in a second set of instances (template parameter X),
+// chosen only when one of them is on, with a per-row branch for each.
+//
+// A block row of eight pixels is one Row: two 4-lane vectors in the baseline build, one
+// 8-lane (256-bit) vector with AVX2. The code below is written on Row's parts and works for
+// both; only the few functions whose instructions differ (lane masks, depth conversion,
+// smooth colour packing, the 16-bit blend) have a version per instruction set, each doing
+// exactly the same arithmetic per lane, so both builds give the same bytes.
+//
+// Included only by those two files; it has no include guard on purpose.
+
+#include <algorithm>
+#include <array>
+#include <bit>
+#include <cmath>
+#include <cstring>
+#include <utility>
+
+#include "fragment/blend_simd.h"
+#include "fragment/fragment_ops.h"
+#include "fragment/shade.h"
+#include "fragment/simd.h"
+
+#if PINEDA_BLOCK_AVX2
+#include <immintrin.h>
+#endif
+
+namespace pineda {
+namespace {
+
+constexpr int N = kBlockSize;
+
+#if PINEDA_BLOCK_AVX2
+using u32x8 = uint32_t __attribute__((vector_size(32)));
+using i32x8 = int32_t __attribute__((vector_size(32)));
+using f32x8 = float __attribute__((vector_size(32)));
+using u16x16 = uint16_t __attribute__((vector_size(32)));
+using LaneU = u32x8;
+using LaneI = i32x8;
+using LaneF = f32x8;
+#else
+using LaneU = u32x4;
+using LaneI = i32x4;
+using LaneF = f32x4;
+#endif
+constexpr int kLanes = static_cast<int>(sizeof(LaneU) / sizeof(uint32_t));
+constexpr int kParts = N / kLanes;
+
+// Eight packed pixels (or depth values) of one block row, in memory order.
+struct Row {
+  LaneU v[kParts];
+};
+// Lane masks (all ones / zero) of one block row.
+struct RowMask {
+  LaneI v[kParts];
+};
+
+// Rows move to and from memory part by part: GCC copies a whole Row (a struct) through the
+// stack, which stalls the 256-bit loads that follow two 128-bit stores.
+inline Row row_load(const void* p) {
+  Row r;
+  for (int h = 0; h < kParts; ++h)
+    std::memcpy(&r.v[h], static_cast<const char*>(p) + sizeof(LaneU) * h, sizeof(LaneU));
+  return r;
+}
+inline void row_store(void* p, const Row& r) {
+  for (int h = 0; h < kParts; ++h)
+    std::memcpy(static_cast<char*>(p) + sizeof(LaneU) * h, &r.v[h], sizeof(LaneU));
+}
+
+inline uint32_t row_lane(const Row& r, int i) {
+  return r.v[i / kLanes][i % kLanes];
+}
+
+inline Row row_splat(uint32_t x) {
+  Row r;
+  for (int h = 0; h < kParts; ++h)
+    r.v[h] = LaneU{} + x;
+  return r;
+}
+
+using pineda::vmax;
+using pineda::vmin;
+
+#if PINEDA_BLOCK_AVX2
+
+// Eight bits to lane masks, and back (the lanes' sign bits).
+inline RowMask row_mask(unsigned m) {
+  const i32x8 bit = {1, 2, 4, 8, 16, 32, 64, 128};
+  return RowMask{{((i32x8{} + static_cast<int32_t>(m)) & bit) != 0}};
+}
+inline unsigned mask_bits(const RowMask& m) {
+  return static_cast<unsigned>(
+      _mm256_movemask_ps(_mm256_castsi256_ps(reinterpret_cast<__m256i>(m.v[0]))));
+}
+
+// The SSE max/min semantics of simd.h vmax/vmin (b where a lane is NaN), eight lanes.
+inline f32x8 vmax(f32x8 a, f32x8 b) {
+  return _mm256_max_ps(a, b);
+}
+inline f32x8 vmin(f32x8 a, f32x8 b) {
+  return _mm256_min_ps(a, b);
+}
+inline f64x4 vmax(f64x4 a, f64x4 b) {
+  return _mm256_max_pd(a, b);
+}
+inline f64x4 vmin(f64x4 a, f64x4 b) {
+  return _mm256_min_pd(a, b);
+}
+
+#else
+
+inline RowMask row_mask(unsigned m) {
+  RowMask r;
+  bits_to_lanes(m, r.v[0], r.v[1]);
+  return r;
+}
+inline unsigned mask_bits(const RowMask& m) {
+  return lane_bits(m.v[0], m.v[1]);
+}
+
+#endif
+
+// Byte offsets of R, G, B, A inside one stored pixel (framebuffer.h ColorFormat).
+template <ColorFormat F> struct Layout;
+template <> struct Layout<ColorFormat::RGBA8> {
+  static constexpr int r = 0, g = 1, b = 2, a = 3, bpp = 4;
+};
+template <> struct Layout<ColorFormat::BGRA8> {
+  static constexpr int r = 2, g = 1, b = 0, a = 3, bpp = 4;
+};
+template <> struct Layout<ColorFormat::ARGB8> {
+  static constexpr int r = 1, g = 2, b = 3, a = 0, bpp = 4;
+};
+template <> struct Layout<ColorFormat::RGB8> {
+  static constexpr int r = 0, g = 1, b = 2, a = -1, bpp = 3;
+};
+
+// Shift of the byte at memory offset `off` within a 4-byte pixel read with memcpy.
+constexpr int byte_shift(int off) {
+  return std::endian::native == std::endian::little ? 8 * off : 8 * (3 - off);
+}
+
+template <ColorFormat F> uint32_t pack_pixel(uint32_t r, uint32_t g, uint32_t b, uint32_t a) {
+  using L = Layout<F>;
+  return r << byte_shift(L::r) | g << byte_shift(L::g) | b << byte_shift(L::b) |
+         a << byte_shift(L::a);
+}
+
+template <ColorFormat F> LaneU pack_lanes(LaneI r, LaneI g, LaneI b, LaneI a) {
+  using L = Layout<F>;
+  return reinterpret_cast<LaneU>(r) << byte_shift(L::r) |
+         reinterpret_cast<LaneU>(g) << byte_shift(L::g) |
+         reinterpret_cast<LaneU>(b) << byte_shift(L::b) |
+         reinterpret_cast<LaneU>(a) << byte_shift(L::a);
+}
+
+// Clamp to [0,1] and round to 8 bits (GL 2.1 §2.14.9); NaN from a degenerate 1/w gives 0.
+inline LaneI to_unorm8(LaneF v) {
+  const LaneF zero = {}, one = zero + 1.0f;
+  v = vmin(vmax(v, zero), one);
+  return __builtin_convertvector(v * 255.0f + 0.5f, LaneI);
+}
+
+// One block row of the colours shade_block computed (ShadePath::PerFragment).
+template <ColorFormat P> void per_fragment_row(const float (*sc)[64], int j, Row& out) {
+  for (int h = 0; h < kParts; ++h) {
+    LaneF ch[4];
+    for (int c = 0; c < 4; ++c)
+      std::memcpy(&ch[c], &sc[c][8 * j + kLanes * h], sizeof(LaneF));
+    out.v[h] =
+        pack_lanes<P>(to_unorm8(ch[0]), to_unorm8(ch[1]), to_unorm8(ch[2]), to_unorm8(ch[3]));
+  }
+}
+
+// The colour planes of a smoothly shaded primitive with lane k holding the channel stored at
+// byte k of a pixel in the packed format P, and each pixel's offset i * dx from its row's start:
+// set up once per block, so that a row is computed pixel by pixel with the four channels in
+// one vector and packed with a few instructions.
+template <ColorFormat P> struct SmoothPlanes {
+  f32x4 v0 = {}, dx = {}, dy = {};
+#if PINEDA_BLOCK_AVX2
+  f32x8 step[N / 2] = {}; // pixels k and k + 4 of a row: i * dx for i = k (low), k + 4 (high)
+#else
+  f32x4 step[N] = {};
+#endif
+  // 1/w is exactly 1 everywhere (no perspective, w = 1): then every w below is exactly 1 and
+  // dividing and multiplying by it change nothing, so both are skipped.
+  bool unit_w = true;
+
+  void init(const FragInputs& in) {
+    using L = Layout<P>;
+    const int offs[4] = {L::r, L::g, L::b, L::a};
+    for (int c = 0; c < 4; ++c) {
+      v0[offs[c]] = in.color_w[c].v0;
+      dx[offs[c]] = in.color_w[c].dx;
+      dy[offs[c]] = in.color_w[c].dy;
+    }
+#if PINEDA_BLOCK_AVX2
+    const f32x8 dx2 = __builtin_shufflevector(dx, dx, 0, 1, 2, 3, 0, 1, 2, 3);
+    for (int k = 0; k < N / 2; ++k) {
+      const auto lo = static_cast<float>(k), hi = static_cast<float>(k + 4);
+      step[k] = f32x8{lo, lo, lo, lo, hi, hi, hi, hi} * dx2;
+    }
+#else
+    for (int i = 0; i < N; ++i)
+      step[i] = static_cast<float>(i) * dx;
+#endif
+    unit_w = in.inv_w.v0 == 1.0f && in.inv_w.dx == 0.0f && in.inv_w.dy == 0.0f;
+  }
+};
+
+// Perspective-correct colour of one block row (GL 2.1 §3.5.1 eq 3.9): c = (c/w) / (1/w), each
+// channel of the pixel at (ox + di + i, oy + dj) computed as ((v0 + di dx + dj dy) + i dx) w.
+template <ColorFormat P>
+[[gnu::always_inline]] inline void shade_row(const SmoothPlanes<P>& sp, const FragInputs& in,
+                                             int di, int dj, Row& out) {
+  const float fi = static_cast<float>(di), fj = static_cast<float>(dj);
+  const f32x4 cr = sp.v0 + fi * sp.dx + fj * sp.dy;
+#if PINEDA_BLOCK_AVX2
+  // Pixels k (low half) and k + 4 (high half) in one vector: the in-lane packs below then
+  // leave the eight pixels in order.
+  const f32x8 cr2 = __builtin_shufflevector(cr, cr, 0, 1, 2, 3, 0, 1, 2, 3);
+  i32x8 px[N / 2];
+  if (sp.unit_w) {
+    for (int k = 0; k < N / 2; ++k)
+      px[k] = to_unorm8(cr2 + sp.step[k]);
+  } else {
+    const PlaneF iw = in.inv_w;
+    const float iwr = iw.v0 + fi * iw.dx + fj * iw.dy;
+    const f32x8 lane = {0, 1, 2, 3, 4, 5, 6, 7};
+    const f32x8 w = 1.0f / (iwr + lane * iw.dx);
+    const f32x8 wk[N / 2] = {
+        __builtin_shufflevector(w, w, 0, 0, 0, 0, 4, 4, 4, 4),
+        __builtin_shufflevector(w, w, 1, 1, 1, 1, 5, 5, 5, 5),
+        __builtin_shufflevector(w, w, 2, 2, 2, 2, 6, 6, 6, 6),
+        __builtin_shufflevector(w, w, 3, 3, 3, 3, 7, 7, 7, 7),
+    };
+    for (int k = 0; k < N / 2; ++k)
+      px[k] = to_unorm8((cr2 + sp.step[k]) * wk[k]);
+  }
+  const __m256i a = _mm256_packs_epi32(reinterpret_cast<__m256i>(px[0]),
+                                       reinterpret_cast<__m256i>(px[1])); // 0 1 | 4 5
+  const __m256i b = _mm256_packs_epi32(reinterpret_cast<__m256i>(px[2]),
+                                       reinterpret_cast<__m256i>(px[3])); // 2 3 | 6 7
+  out.v[0] = reinterpret_cast<u32x8>(_mm256_packus_epi16(a, b));
+#else
+  constexpr f32x4 kLaneLo = {0, 1, 2, 3};
+  constexpr f32x4 kLaneHi = {4, 5, 6, 7};
+  i32x4 px[N];
+  if (sp.unit_w) {
+    for (int i = 0; i < N; ++i)
+      px[i] = to_unorm8(cr + sp.step[i]);
+  } else {
+    const PlaneF iw = in.inv_w;
+    const float iwr = iw.v0 + fi * iw.dx + fj * iw.dy;
+    const f32x4 w[2] = {1.0f / (iwr + kLaneLo * iw.dx), 1.0f / (iwr + kLaneHi * iw.dx)};
+    for (int i = 0; i < N; ++i)
+      px[i] = to_unorm8((cr + sp.step[i]) * w[i >> 2][i & 3]);
+  }
+  out.v[0] = pack_pixels(px[0], px[1], px[2], px[3]);
+  out.v[1] = pack_pixels(px[4], px[5], px[6], px[7]);
+#endif
+}
+
+#if PINEDA_BLOCK_AVX2
+// blend_simd.h blend_over_lanes on sixteen 16-bit lanes (four pixels, two per 128-bit half).
+template <int A> inline u16x16 blend_over_lanes16(u16x16 s, u16x16 d) {
+  const u16x16 a = __builtin_shufflevector(s, s, A, A, A, A, 4 + A, 4 + A, 4 + A, 4 + A, 8 + A,
+                                           8 + A, 8 + A, 8 + A, 12 + A, 12 + A, 12 + A, 12 + A);
+  const u16x16 n = s * a + d * (255 - a) + 128;
+  const u16x16 k257 = u16x16{} + 257;
+  return reinterpret_cast<u16x16>(
+      _mm256_mulhi_epu16(reinterpret_cast<__m256i>(n), reinterpret_cast<__m256i>(k257)));
+}
+
+// Eight pixels: s over d, alpha at byte offset A. The in-lane unpacks take pixels 0 1 | 4 5
+// and 2 3 | 6 7, which the in-lane pack puts back in order.
+template <int A> inline u32x8 blend_over8(u32x8 s, u32x8 d) {
+  const __m256i z = _mm256_setzero_si256();
+  const __m256i sv = reinterpret_cast<__m256i>(s), dv = reinterpret_cast<__m256i>(d);
+  const u16x16 lo = blend_over_lanes16<A>(reinterpret_cast<u16x16>(_mm256_unpacklo_epi8(sv, z)),
+                                          reinterpret_cast<u16x16>(_mm256_unpacklo_epi8(dv, z)));
+  const u16x16 hi = blend_over_lanes16<A>(reinterpret_cast<u16x16>(_mm256_unpackhi_epi8(sv, z)),
+                                          reinterpret_cast<u16x16>(_mm256_unpackhi_epi8(dv, z)));
+  return reinterpret_cast<u32x8>(
+      _mm256_packus_epi16(reinterpret_cast<__m256i>(lo), reinterpret_cast<__m256i>(hi)));
+}
+#endif
+
+// SRC_ALPHA, ONE_MINUS_SRC_ALPHA, FUNC_ADD in exact unorm8 (blend.h blend_over_channel) in
+// 16-bit lanes (blend_simd.h).
+template <ColorFormat F> inline void blend_over_row(Row& s, const Row& d) {
+#if PINEDA_BLOCK_AVX2
+  s.v[0] = blend_over8<Layout<F>::a>(s.v[0], d.v[0]);
+#else
+  for (int h = 0; h < 2; ++h)
+    s.v[h] = blend_over4<Layout<F>::a>(s.v[h], d.v[h]);
+#endif
+}
+
+template <ColorFormat F> void unpack_pixel(uint32_t px, bool has_alpha, uint8_t c[4]) {
+  using L = Layout<F>;
+  c[0] = static_cast<uint8_t>(px >> byte_shift(L::r));
+  c[1] = static_cast<uint8_t>(px >> byte_shift(L::g));
+  c[2] = static_cast<uint8_t>(px >> byte_shift(L::b));
+  // Without alpha bits, destination alpha reads as 1 (GL 2.1 §4.1.8).
+  c[3] = has_alpha ? static_cast<uint8_t>(px >> byte_shift(L::a)) : 255;
+}
+
+// Any other blend: factors without the constant colour in 16-bit lanes (blend_simd.h, the
+// same bytes as blend_pixel), four pixels at a time; the others one fragment at a time through
+// blend_pixel (float).
+template <ColorFormat F>
+void blend_generic_row(const FragCtx& ctx, unsigned m, Row& s, const Row& d) {
+  alignas(32) uint32_t sp[N], dp[N];
+  row_store(sp, s);
+  row_store(dp, d);
+  if (ctx.blend_fixed) {
+    for (int h = 0; h < 2; ++h) {
+      u32x4 sv, dv;
+      std::memcpy(&sv, sp + 4 * h, sizeof(sv));
+      std::memcpy(&dv, dp + 4 * h, sizeof(dv));
+      sv = blend_fixed4<Layout<F>::a>(ctx.blend, ctx.key.has_alpha, sv, dv);
+      std::memcpy(sp + 4 * h, &sv, sizeof(sv));
+    }
+  } else {
+    for (int i = 0; i < N; ++i) {
+      if (((m >> i) & 1u) == 0) continue;
+      uint8_t sc[4], dc[4], oc[4];
+      unpack_pixel<F>(sp[i], true, sc);
+      unpack_pixel<F>(dp[i], ctx.key.has_alpha, dc);
+      blend_pixel(ctx.blend, sc, dc, oc);
+      sp[i] = pack_pixel<F>(oc[0], oc[1], oc[2], oc[3]);
+    }
+  }
+  s = row_load(sp);
+}
+
+// The plane's z at the eight pixels (ox + di + i, oy + dj) in depth-buffer units, clamped to
+// [0, 2^bits - 1] (window z clamped to [0,1], GL 2.1 §2.11.1) and rounded to the nearest
+// representable value. The values are non-negative, so truncation is the floor. Below 2^31 the
+// conversion is the packed one; 32-bit buffers convert lane by lane.
+[[gnu::always_inline]] inline Row depth_values(const FragCtx& ctx, const PlaneD& zp, int di,
+                                               int dj) {
+  const double zr = zp.v0 + di * zp.dx + dj * zp.dy;
+  Row zv;
+#if PINEDA_BLOCK_AVX2
+  const f64x4 zero = {}, zmax = zero + ctx.depth_max;
+  f64x4 zc[2];
+  for (int h = 0; h < 2; ++h) {
+    const f64x4 lane = {4.0 * h, 4.0 * h + 1.0, 4.0 * h + 2.0, 4.0 * h + 3.0};
+    const f64x4 z = zr + lane * zp.dx;
+    zc[h] = vmin(vmax(z, zero), zmax) + 0.5;
+  }
+  if (ctx.depth_max < 2147483648.0) {
+    const i32x4 lo = __builtin_convertvector(zc[0], i32x4);
+    const i32x4 hi = __builtin_convertvector(zc[1], i32x4);
+    zv.v[0] = reinterpret_cast<u32x8>(__builtin_shufflevector(lo, hi, 0, 1, 2, 3, 4, 5, 6, 7));
+  } else {
+    for (int l = 0; l < N; ++l)
+      zv.v[0][l] = static_cast<uint32_t>(static_cast<int64_t>(zc[l >> 2][l & 3]));
+  }
+#else
+  const f64x2 zero = {}, zmax = zero + ctx.depth_max;
+  f64x2 zc[N / 2];
+  for (int h = 0; h < N / 2; ++h) {
+    const f64x2 lane = {2.0 * h, 2.0 * h + 1.0};
+    const f64x2 z = zr + lane * zp.dx;
+    zc[h] = vmin(vmax(z, zero), zmax) + 0.5;
+  }
+  if (ctx.depth_max < 2147483648.0) {
+    for (int k = 0; k < 2; ++k)
+      zv.v[k] = reinterpret_cast<u32x4>(__builtin_convertvector(
+          __builtin_shufflevector(zc[2 * k], zc[2 * k + 1], 0, 1, 2, 3), i32x4));
+  } else {
+    for (int k = 0; k < 2; ++k)
+      for (int l = 0; l < 4; ++l)
+        zv.v[k][l] = static_cast<uint32_t>(static_cast<int64_t>(zc[2 * k + l / 2][l & 1]));
+  }
+#endif
+  return zv;
+}
+
+// Depth test and write of one row of a block (GL 2.1 §4.1.6). Returns the fragments of `m`
+// that passed.
+template <DepthPath D>
+[[gnu::always_inline]] inline unsigned depth_row(const FragCtx& ctx, const FragInputs& in, int bx,
+                                                 int y, int di, int dj, unsigned m) {
+  uint32_t* const d = ctx.depth + static_cast<ptrdiff_t>(y) * ctx.depth_stride + bx;
+  const Row zv = depth_values(ctx, in.z, di, dj);
+  const bool write = D != DepthPath::Generic || ctx.depth_write;
+  if (bx + N <= ctx.fb_width) {
+    // The whole row lies in the buffer: test all eight lanes and keep the covered ones.
+    Row old = row_load(d);
+    RowMask pass = row_mask(m);
+    for (int h = 0; h < kParts; ++h) {
+      if constexpr (D == DepthPath::LessWrite) {
+        pass.v[h] &= zv.v[h] < old.v[h];
+      } else if constexpr (D == DepthPath::LequalWrite) {
+        pass.v[h] &= zv.v[h] <= old.v[h];
+      } else {
+        const LaneI f = {}, lt = f - static_cast<int32_t>(ctx.depth_func & 1u);
+        const LaneI eq = f - static_cast<int32_t>((ctx.depth_func >> 1) & 1u);
+        const LaneI gt = f - static_cast<int32_t>((ctx.depth_func >> 2) & 1u);
+        pass.v[h] &= ((zv.v[h] < old.v[h]) & lt) | ((zv.v[h] == old.v[h]) & eq) |
+                     ((zv.v[h] > old.v[h]) & gt);
+      }
+    }
+    const unsigned bits = mask_bits(pass);
+    if (write && bits != 0) {
+      for (int h = 0; h < kParts; ++h)
+        old.v[h] = pass.v[h] ? zv.v[h] : old.v[h];
+      row_store(d, old);
+    }
+    return bits;
+  }
+  // The last block of a row whose width is not a multiple of 8: fragment by fragment.
+  unsigned bits = 0;
+  for (int i = 0; i < N; ++i) {
+    if (((m >> i) & 1u) == 0) continue;
+    const uint32_t z = row_lane(zv, i);
+    bool pass;
+    if constexpr (D == DepthPath::LessWrite) {
+      pass = z < d[i];
+    } else if constexpr (D == DepthPath::LequalWrite) {
+      pass = z <= d[i];
+    } else {
+      const unsigned rel = z < d[i] ? 1u : (z == d[i] ? 2u : 4u);
+      pass = (ctx.depth_func & rel) != 0;
+    }
+    if (pass) {
+      bits |= 1u << i;
+      if (write) d[i] = z;
+    }
+  }
+  return bits;
+}
+
+// The depth test (GL 2.1 §4.1.6) of a fully covered block at once: true when no fragment of
+// the block at (bx, by) can pass, so that the block loop can drop the block before any other
+// work. It reads the depth buffer itself and keeps no state, so every other writer of the
+// buffer (clears, DrawPixels, CopyPixels, other draws) is seen as it is.
+//
+// Each fragment's stored-format z is q(z) = trunc(clamp(z, 0, max) + 0.5) of the plane value
+// z computed in depth_values, and q is non-decreasing. Over the block the plane's exact values
+// lie between its values at two corners; the computed ones differ from the exact ones by a few
+// rounding errors of the terms' magnitudes (at most 2^-49 of their sum here), which the margin
+// covers. So every fragment's value is at least q(lo) and at most q(hi): with LESS all fail
+// when no stored value exceeds q(lo), with LEQUAL when all are below it, and GREATER and
+// GEQUAL mirror that with q(hi). Other functions (and non-finite planes) never skip.
+template <DepthPath D>
+inline bool block_fails_depth(const FragCtx& ctx, const FragInputs& in, int bx, int by) {
+  const unsigned func = D == DepthPath::LessWrite     ? 1u
+                        : D == DepthPath::LequalWrite ? 3u
+                                                      : ctx.depth_func;
+  const bool below = func == 1u || func == 3u; // LESS, LEQUAL
+  if (!below && func != 4u && func != 6u) return false;
+  const PlaneD zp = in.z;
+  const double a = zp.v0, b = (bx - in.ox) * zp.dx, c = (by - in.oy) * zp.dy;
+  const double ex = (N - 1) * zp.dx, ey = (N - 1) * zp.dy;
+  const double size = std::fabs(a) + std::fabs(b) + std::fabs(c) + std::fabs(ex) + std::fabs(ey);
+  if (!(size < 1e300)) return false;
+  const double margin = size * 0x1p-40;
+  const double z = below ? a + b + c + std::min(ex, 0.0) + std::min(ey, 0.0) - margin
+                         : a + b + c + std::max(ex, 0.0) + std::max(ey, 0.0) + margin;
+  const double zc = std::min(std::max(z, 0.0), ctx.depth_max) + 0.5;
+  const uint32_t q = ctx.depth_max < 2147483648.0 ? static_cast<uint32_t>(static_cast<int32_t>(zc))
+                                                  : static_cast<uint32_t>(static_cast<int64_t>(zc));
+  // The largest (LESS, LEQUAL) or smallest (GREATER, GEQUAL) stored value of the block.
+  const uint32_t* d = ctx.depth + static_cast<ptrdiff_t>(by) * ctx.depth_stride + bx;
+  Row acc = row_load(d);
+  for (int j = 1; j < N; ++j) {
+    const Row r = row_load(d + j * ctx.depth_stride);
+    for (int h = 0; h < kParts; ++h)
+      acc.v[h] =
+          below ? (acc.v[h] > r.v[h] ? acc.v[h] : r.v[h]) : (acc.v[h] < r.v[h] ? acc.v[h] : r.v[h]);
+  }
+  const LaneU qv = LaneU{} + q;
+  RowMask pass;
+  for (int h = 0; h < kParts; ++h) {
+    switch (func) {
+    case 1u:
+      pass.v[h] = acc.v[h] > qv;
+      break;
+    case 3u:
+      pass.v[h] = acc.v[h] >= qv;
+      break;
+    case 4u:
+      pass.v[h] = acc.v[h] < qv;
+      break;
+    default:
+      pass.v[h] = acc.v[h] <= qv;
+      break;
+    }
+  }
+  return mask_bits(pass) == 0;
+}
+
+// Alpha test of one row (GL 2.1 §4.1.4): the fragment alpha as the 8-bit value it would be
+// stored as, against the reference converted the same way, which is what llvmpipe compares
+// (a float comparison gives different results for alphas within half a step of the
+// reference). Returns the fragments of `m` that pass.
+template <ColorFormat P> unsigned alpha_row(const FragCtx& ctx, const Row& s, unsigned m) {
+  const LaneI f = {}, ref = f + static_cast<int32_t>(ctx.alpha_ref);
+  const LaneI lt = f - static_cast<int32_t>(ctx.alpha_func & 1u);
+  const LaneI eq = f - static_cast<int32_t>((ctx.alpha_func >> 1) & 1u);
+  const LaneI gt = f - static_cast<int32_t>((ctx.alpha_func >> 2) & 1u);
+  RowMask pass;
+  for (int h = 0; h < kParts; ++h) {
+    const LaneI a = reinterpret_cast<LaneI>((s.v[h] >> byte_shift(Layout<P>::a)) & 0xffu);
+    pass.v[h] = ((a < ref) & lt) | ((a == ref) & eq) | ((a > ref) & gt);
+  }
+  return m & mask_bits(pass);
+}
+
+// Stencil test of one row (GL 2.1 §4.1.5), the depth test of the survivors (§4.1.6), and the
+// stencil update chosen by the outcome of both: sfail where the stencil test failed, dpfail
+// where the depth test failed, dppass where both passed (or the depth test is off, which
+// counts as passing). Returns the fragments that passed both tests.
+template <DepthPath D>
+unsigned stencil_depth_row(const FragCtx& ctx, const FragInputs& in, int bx, int y, int di, int dj,
+                           unsigned m) {
+  uint8_t* const st = ctx.stencil + static_cast<ptrdiff_t>(y) * ctx.fb_width + bx;
+  // Whole rows inside the buffer are loaded and stored as eight bytes; the last block of a
+  // row whose width is not a multiple of 8 touches only its fragments.
+  const bool whole = bx + N <= ctx.fb_width;
+  uint8_t old[N] = {};
+  if (whole) {
+    std::memcpy(old, st, N);
+  } else {
+    for (int i = 0; i < N; ++i)
+      if ((m >> i) & 1u) old[i] = st[i];
+  }
+  const i32x4 v[2] = {{old[0], old[1], old[2], old[3]}, {old[4], old[5], old[6], old[7]}};
+  const i32x4 zero = {}, vm = zero + ctx.stencil_value_mask, ref = zero + ctx.stencil_ref;
+  const i32x4 masked_ref = ref & vm;
+  const i32x4 lt = zero - static_cast<int32_t>(ctx.stencil_func & 1u);
+  const i32x4 eq = zero - static_cast<int32_t>((ctx.stencil_func >> 1) & 1u);
+  const i32x4 gt = zero - static_cast<int32_t>((ctx.stencil_func >> 2) & 1u);
+  i32x4 pass[2];
+  for (int h = 0; h < 2; ++h) {
+    const i32x4 sv = v[h] & vm;
+    pass[h] = ((masked_ref < sv) & lt) | ((masked_ref == sv) & eq) | ((masked_ref > sv) & gt);
+  }
+  const unsigned spass = m & lane_bits(pass[0], pass[1]);
+  unsigned zpass = spass;
+  if constexpr (D != DepthPath::Off)
+    zpass = spass != 0 ? depth_row<D>(ctx, in, bx, y, di, dj, spass) : 0;
+  if (ctx.stencil_write_mask == 0) return zpass;
+  const i32x4 wm = zero + ctx.stencil_write_mask;
+  i32x4 sfail[2], dpfail[2], dppass[2];
+  bits_to_lanes(m & ~spass, sfail[0], sfail[1]);
+  bits_to_lanes(spass & ~zpass, dpfail[0], dpfail[1]);
+  bits_to_lanes(zpass, dppass[0], dppass[1]);
+  uint8_t out[N];
+  for (int h = 0; h < 2; ++h) {
+    const i32x4 keep = ~(sfail[h] | dpfail[h] | dppass[h]);
+    const i32x4 nv = (stencil_op_lanes(ctx.stencil_ops[0], v[h], ref) & sfail[h]) |
+                     (stencil_op_lanes(ctx.stencil_ops[1], v[h], ref) & dpfail[h]) |
+                     (stencil_op_lanes(ctx.stencil_ops[2], v[h], ref) & dppass[h]) | (v[h] & keep);
+    const i32x4 w = (v[h] & ~wm) | (nv & wm);
+    for (int k = 0; k < 4; ++k)
+      out[4 * h + k] = static_cast<uint8_t>(w[k]);
+  }
+  if (whole) {
+    std::memcpy(st, out, N);
+  } else {
+    for (int i = 0; i < N; ++i)
+      if ((m >> i) & 1u) st[i] = out[i];
+  }
+  return zpass;
+}
+
+// Blend or logical operation, then colour mask, of source row `s` against destination `dst`
+// (GL 2.1 §4.1.8, §4.1.10, §4.2.2); the result is left in `s`.
+template <ColorFormat F, ColorPath C, BlendPath B>
+[[gnu::always_inline]] inline void combine_row4(const FragCtx& ctx, unsigned m, bool logic, Row& s,
+                                                const Row& dst) {
+  if constexpr (B == BlendPath::Over)
+    blend_over_row<F>(s, dst);
+  else if constexpr (B == BlendPath::Generic)
+    blend_generic_row<F>(ctx, m, s, dst);
+  if (logic) {
+    // per_fragment.h apply_logic, written out on the row's lanes.
+    const LogicMasks& lm = ctx.logic;
+    for (int h = 0; h < kParts; ++h) {
+      const LaneU a = s.v[h], b = dst.v[h];
+      s.v[h] = (a & b & lm.sd) | (a & ~b & lm.s_nd) | (~a & b & lm.ns_d) | (~a & ~b & lm.ns_nd);
+    }
+  }
+  if constexpr (C == ColorPath::Partial) {
+    const LaneU keep = LaneU{} + ctx.color_keep;
+    for (int h = 0; h < kParts; ++h)
+      s.v[h] = (dst.v[h] & keep) | (s.v[h] & ~keep);
+  }
+}
+
+// Blend, colour mask and store of one row of a 4-byte format (GL 2.1 §4.1.8, §4.2.2). Full
+// rows load and store the eight pixels whole; others touch only their fragments.
+template <ColorFormat F, ColorPath C, BlendPath B, bool X>
+[[gnu::always_inline]] inline void write_row4(const FragCtx& ctx, uint8_t* row, unsigned m,
+                                              bool in_buffer, Row& s) {
+  constexpr bool kReadsDst = B != BlendPath::Off || C == ColorPath::Partial;
+  // GL 2.1 §4.1.10: the logical operation takes blending's place (the key has blend off).
+  const bool logic = X && ctx.key.logic_op;
+  const bool reads_dst = kReadsDst || logic;
+  if (!reads_dst) {
+    if (m == 0xffu) {
+      row_store(row, s);
+      return;
+    }
+    // A partial row that needs nothing of the destination stores its covered pixels alone:
+    // merging into a loaded row would make the store wait for the row's cache line, which for
+    // small scattered primitives is usually a miss.
+    alignas(32) uint32_t px[N];
+    row_store(px, s);
+    for (unsigned b = m; b != 0; b &= b - 1) {
+      const int i = std::countr_zero(b);
+      std::memcpy(row + 4 * i, &px[i], 4);
+    }
+    return;
+  }
+  if (in_buffer) {
+    // The whole row lies in the buffer: compute all eight lanes and select the covered ones.
+    Row dst = row_load(row);
+    combine_row4<F, C, B>(ctx, m, logic, s, dst);
+    if (m == 0xffu) {
+      row_store(row, s);
+      return;
+    }
+    const RowMask lanes = row_mask(m);
+    for (int h = 0; h < kParts; ++h)
+      dst.v[h] = lanes.v[h] ? s.v[h] : dst.v[h];
+    row_store(row, dst);
+    return;
+  }
+  // The last block of a row whose width is not a multiple of 8: fragment by fragment.
+  alignas(32) uint32_t tmp[N] = {};
+  if (reads_dst) {
+    for (int i = 0; i < N; ++i)
+      if ((m >> i) & 1u) std::memcpy(&tmp[i], row + 4 * i, 4);
+  }
+  const Row dst = row_load(tmp);
+  combine_row4<F, C, B>(ctx, m, logic, s, dst);
+  row_store(tmp, s);
+  for (int i = 0; i < N; ++i)
+    if ((m >> i) & 1u) std::memcpy(row + 4 * i, &tmp[i], 4);
+}
+
+// The same for 3-byte RGB8 pixels, one fragment at a time; `s` is packed as RGBA8.
+template <ColorPath C, BlendPath B, bool X>
+void write_row3(const FragCtx& ctx, uint8_t* row, unsigned m, const Row& s) {
+  alignas(32) uint32_t sp[N];
+  row_store(sp, s);
+  uint8_t keep[4];
+  std::memcpy(keep, &ctx.color_keep, 4);
+  for (int i = 0; i < N; ++i) {
+    if (((m >> i) & 1u) == 0) continue;
+    uint8_t* p = row + 3 * i;
+    uint8_t c[4];
+    unpack_pixel<ColorFormat::RGBA8>(sp[i], true, c);
+    if constexpr (B != BlendPath::Off) {
+      const uint8_t d[4] = {p[0], p[1], p[2], 255}; // no alpha: destination alpha is 1
+      if constexpr (B == BlendPath::Over) {
+        for (int k = 0; k < 3; ++k)
+          c[k] = blend_over_channel(c[k], d[k], c[3]);
+      } else {
+        uint8_t o[4];
+        blend_pixel(ctx.blend, c, d, o);
+        std::memcpy(c, o, 4);
+      }
+    }
+    if (X && ctx.key.logic_op) {
+      const uint32_t src = c[0] | (c[1] << 8) | (c[2] << 16);
+      const uint32_t dst = p[0] | (p[1] << 8) | (p[2] << 16);
+      const uint32_t out = apply_logic(ctx.logic, src, dst);
+      for (int k = 0; k < 3; ++k)
+        c[k] = static_cast<uint8_t>(out >> (8 * k));
+    }
+    for (int k = 0; k < 3; ++k)
+      p[k] = C == ColorPath::Partial ? static_cast<uint8_t>((p[k] & keep[k]) | (c[k] & ~keep[k]))
+                                     : c[k];
+  }
+}
+
+// X selects the extended instances: alpha test (§4.1.4) before the stencil and depth tests
+// (§4.1.5, §4.1.6), and the logical operation (§4.1.10) in place of blending, each behind a
+// per-row branch on the key. Without X none of that code exists in the instance.
+template <DepthPath D, ColorFormat F, ColorPath C, BlendPath B, ShadePath S, bool X>
+void block_loop(const FragCtx& ctx, const FragInputs& in, int bx, int by, uint64_t mask) {
+  using L = Layout<F>;
+  // Pixels travel packed in the format's byte order; RGB8 rows are packed as RGBA8.
+  constexpr ColorFormat P = L::bpp == 4 ? F : ColorFormat::RGBA8;
+  // A fully covered block that the depth test rejects whole (hidden surfaces drawn after what
+  // hides them) costs one pass over its stored depths. The stencil test must still see its
+  // fragments (depth-fail updates); the alpha test and sample counting need not.
+  if constexpr (D != DepthPath::Off) {
+    if (mask == ~uint64_t{0} && (!X || !ctx.key.stencil_test) &&
+        block_fails_depth<D>(ctx, in, bx, by))
+      return;
+  }
+  [[maybe_unused]] Row const_row{};
+  [[maybe_unused]] SmoothPlanes<P> smooth;
+  if constexpr (S == ShadePath::Smooth) smooth.init(in);
+  if constexpr (S == ShadePath::Const)
+    const_row = row_splat(
+        pack_pixel<P>(in.const_color[0], in.const_color[1], in.const_color[2], in.const_color[3]));
+  // Texturing and fog: the whole block's colours first (fragment/shade.cpp).
+  [[maybe_unused]] alignas(32) float shaded_block[4][64];
+  if constexpr (S == ShadePath::PerFragment) {
+    std::memset(shaded_block, 0, sizeof(shaded_block));
+    shade_block(ctx, in, bx, by, mask, shaded_block);
+  }
+  while (mask != 0) {
+    const int j = std::countr_zero(mask) >> 3;
+    unsigned m = static_cast<unsigned>(mask >> (8 * j)) & 0xffu;
+    mask &= ~(0xffull << (8 * j));
+    const int y = by + j;
+    const int di = bx - in.ox, dj = y - in.oy;
+    Row s;
+    bool shaded = false;
+    if constexpr (X) {
+      if (ctx.key.alpha_test) {
+        if constexpr (S == ShadePath::Const)
+          s = const_row;
+        else if constexpr (S == ShadePath::PerFragment)
+          per_fragment_row<P>(shaded_block, j, s);
+        else
+          shade_row<P>(smooth, in, di, dj, s);
+        shaded = true;
+        m = alpha_row<P>(ctx, s, m);
+        if (m == 0) continue;
+      }
+      if (ctx.key.stencil_test) {
+        m = stencil_depth_row<D>(ctx, in, bx, y, di, dj, m);
+        if (m == 0) continue;
+      } else if constexpr (D != DepthPath::Off) {
+        m = depth_row<D>(ctx, in, bx, y, di, dj, m);
+        if (m == 0) continue;
+      }
+    } else if constexpr (D != DepthPath::Off) {
+      m = depth_row<D>(ctx, in, bx, y, di, dj, m);
+      if (m == 0) continue;
+    }
+    // §4.1.7: SAMPLES_PASSED counts what survived the stencil and depth tests.
+    if constexpr (X)
+      if (ctx.key.count_samples) ctx.samples_passed += static_cast<unsigned>(std::popcount(m));
+    if constexpr (C != ColorPath::None) {
+      uint8_t* const row = ctx.color + static_cast<ptrdiff_t>(y) * ctx.color_stride +
+                           static_cast<ptrdiff_t>(bx) * L::bpp;
+      if (!shaded) {
+        if constexpr (S == ShadePath::Const)
+          s = const_row;
+        else if constexpr (S == ShadePath::PerFragment)
+          per_fragment_row<P>(shaded_block, j, s);
+        else
+          shade_row<P>(smooth, in, di, dj, s);
+      }
+      if constexpr (L::bpp == 4)
+        write_row4<F, C, B, X>(ctx, row, m, bx + N <= ctx.fb_width, s);
+      else
+        write_row3<C, B, X>(ctx, row, m, s);
+    }
+  }
+}
+
+void noop_block(const FragCtx&, const FragInputs&, int, int, uint64_t) {}
+
+// Table of colour-writing instances, index
+//   (((depth * formats + format) * 2 + (partial ? 1 : 0)) * blends + blend) * shades + shade.
+constexpr int kColorInstances =
+    kDepthPathCount * kColorFormatCount * 2 * kBlendPathCount * kShadePathCount;
+
+constexpr int color_index(DepthPath d, ColorFormat f, ColorPath c, BlendPath b, ShadePath s) {
+  return (((static_cast<int>(d) * kColorFormatCount + static_cast<int>(f)) * 2 +
+           (c == ColorPath::Partial ? 1 : 0)) *
+              kBlendPathCount +
+          static_cast<int>(b)) *
+             kShadePathCount +
+         static_cast<int>(s);
+}
+
+template <int I, bool X> constexpr BlockFn color_entry() {
+  constexpr auto s = static_cast<ShadePath>(I % kShadePathCount);
+  constexpr auto b = static_cast<BlendPath>((I / kShadePathCount) % kBlendPathCount);
+  constexpr int rest = I / (kShadePathCount * kBlendPathCount);
+  constexpr auto c = (rest % 2) ? ColorPath::Partial : ColorPath::All;
+  constexpr auto f = static_cast<ColorFormat>((rest / 2) % kColorFormatCount);
+  constexpr auto d = static_cast<DepthPath>(rest / (2 * kColorFormatCount));
+  static_assert(color_index(d, f, c, b, s) == I);
+  // The extended instances run every depth function through the generic path, which keeps
+  // their number down: all depth rows but Off name the one Generic instance.
+  constexpr DepthPath dx = (X && d != DepthPath::Off) ? DepthPath::Generic : d;
+  return &block_loop<dx, f, c, b, s, X>;
+}
+
+template <bool X, size_t... I>
+constexpr std::array<BlockFn, sizeof...(I)> make_color_table(std::index_sequence<I...>) {
+  return {color_entry<static_cast<int>(I), X>()...};
+}
+
+constexpr std::array<BlockFn, kColorInstances> kColorTable =
+    make_color_table<false>(std::make_index_sequence<kColorInstances>{});
+
+constexpr std::array<BlockFn, kColorInstances> kExtColorTable =
+    make_color_table<true>(std::make_index_sequence<kColorInstances>{});
+
+// Depth-only instances of the extended loop: the shade path matters for the alpha test.
+constexpr std::array<BlockFn, 2 * kShadePathCount> kExtDepthOnlyTable = {
+    &block_loop<DepthPath::Off, ColorFormat::RGBA8, ColorPath::None, BlendPath::Off,
+                ShadePath::Const, true>,
+    &block_loop<DepthPath::Off, ColorFormat::RGBA8, ColorPath::None, BlendPath::Off,
+                ShadePath::Smooth, true>,
+    &block_loop<DepthPath::Off, ColorFormat::RGBA8, ColorPath::None, BlendPath::Off,
+                ShadePath::PerFragment, true>,
+    &block_loop<DepthPath::Generic, ColorFormat::RGBA8, ColorPath::None, BlendPath::Off,
+                ShadePath::Const, true>,
+    &block_loop<DepthPath::Generic, ColorFormat::RGBA8, ColorPath::None, BlendPath::Off,
+                ShadePath::Smooth, true>,
+    &block_loop<DepthPath::Generic, ColorFormat::RGBA8, ColorPath::None, BlendPath::Off,
+                ShadePath::PerFragment, true>,
+};
+
+// Depth-only instances (colour mask all false or no colour buffer); the other template
+// parameters do not matter there.
+constexpr std::array<BlockFn, kDepthPathCount> kDepthOnlyTable = {
+    &noop_block,
+    &block_loop<DepthPath::LessWrite, ColorFormat::RGBA8, ColorPath::None, BlendPath::Off,
+                ShadePath::Const, false>,
+    &block_loop<DepthPath::LequalWrite, ColorFormat::RGBA8, ColorPath::None, BlendPath::Off,
+                ShadePath::Const, false>,
+    &block_loop<DepthPath::Generic, ColorFormat::RGBA8, ColorPath::None, BlendPath::Off,
+                ShadePath::Const, false>,
+};
+
+// The instance for a key and shade path from this translation unit's tables.
+BlockFn select_from_tables(const StateKey& key, ShadePath shade) {
+  const ColorPath c = key.color_path();
+  if (key.ext()) {
+    const DepthPath d = key.depth_test ? DepthPath::Generic : DepthPath::Off;
+    if (c == ColorPath::None)
+      return kExtDepthOnlyTable[(d == DepthPath::Generic ? kShadePathCount : 0) +
+                                static_cast<int>(shade)];
+    return kExtColorTable[color_index(d, key.format, c, key.blend_path(), shade)];
+  }
+  if (c == ColorPath::None) return kDepthOnlyTable[static_cast<int>(key.depth_path())];
+  return kColorTable[color_index(key.depth_path(), key.format, c, key.blend_path(), shade)];
+}
+
+} // namespace
+} // namespace pineda
