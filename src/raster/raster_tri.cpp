@@ -192,18 +192,37 @@ void traverse(const TriEdges& te, const FragCtx& ctx, const FragInputs& in, Bloc
   TriEdges te;
   if (!setup_edges(t, ctx.clip_x0, ctx.clip_y0, ctx.clip_x1, ctx.clip_y1, te)) return;
   const RasterState& rs = *dc.state;
+  const RasterModes& modes = rs.modes;
+  // A bounding box inside one block (most small triangles): its coverage is found before any
+  // plane is set up, so a triangle that covers no pixel centre costs no more, and the block
+  // goes straight to the fragment stage. The mask is the one traverse would find (the exact
+  // edge tests inside the bounding box).
+  constexpr int B = kBlockSize;
+  const int bx = te.minx & ~(B - 1), by = te.miny & ~(B - 1);
+  const bool one_block = bx == (te.maxx & ~(B - 1)) && by == (te.maxy & ~(B - 1));
+  uint64_t mask = 0;
+  if (one_block) {
+    if (!dc.bands.owns(by)) return;
+    int64_t e[3];
+    for (int i = 0; i < 3; ++i)
+      e[i] = te.e[i].base + by * te.e[i].sy + bx * te.e[i].sx;
+    mask = partial_mask64(te, e, te.minx - bx, te.maxx - bx, te.miny - by, te.maxy - by);
+    if (modes.polygon_stipple) mask &= stipple_block_mask(modes.polygon_stipple_rows, bx, by);
+    if (mask == 0) return;
+  }
   // GL 2.1 §2.14.1: with two-sided lighting a back-facing polygon takes the back colours.
   const int slot = (rs.two_sided && back_facing) ? kAttrBackColor : kAttrColor;
   FragInputs in;
   const PlaneSetup ps = make_plane_setup(t);
   const ShadePath shade = setup_triangle_inputs(ctx, ps, a, b, c, provoking, rs.flat, slot, in);
-  const RasterModes& modes = rs.modes;
   // GL 2.1 §3.5.5: the offset moves the whole depth plane (the fragment stage clamps).
   if (modes.offset_fill && ctx.needs_depth)
     in.z.v0 += polygon_offset_depth(modes, in.z.dx, in.z.dy, ctx.depth_max);
   const auto run = [&](ShadePath path) {
     const BlockFn fn = ctx.fn[static_cast<int>(path)];
-    if (modes.polygon_stipple)
+    if (one_block)
+      fn(ctx, in, bx, by, mask);
+    else if (modes.polygon_stipple)
       traverse<true>(te, ctx, in, fn, modes.polygon_stipple_rows, dc.bands);
     else
       traverse<false>(te, ctx, in, fn, nullptr, dc.bands);

@@ -10,6 +10,22 @@ constexpr int64_t kHalfPixel = kSubpixelOne / 2; // pixel centres sit at +0.5
 } // namespace
 
 bool setup_edges(const SnappedTri& t, int cx0, int cy0, int cx1, int cy1, TriEdges& out) {
+  // The bounding box first: most tiny triangles hold no pixel centre and need nothing else.
+  const int64_t min_x = std::min({t.x[0], t.x[1], t.x[2]});
+  const int64_t max_x = std::max({t.x[0], t.x[1], t.x[2]});
+  const int64_t min_y = std::min({t.y[0], t.y[1], t.y[2]});
+  const int64_t max_y = std::max({t.y[0], t.y[1], t.y[2]});
+  // Pixels whose centres lie in [min, max]: ceil((min - 128) / 256) .. floor((max - 128) / 256).
+  const int64_t px0 = (min_x - kHalfPixel + kSubpixelOne - 1) >> kSubpixelBits;
+  const int64_t px1 = (max_x - kHalfPixel) >> kSubpixelBits;
+  const int64_t py0 = (min_y - kHalfPixel + kSubpixelOne - 1) >> kSubpixelBits;
+  const int64_t py1 = (max_y - kHalfPixel) >> kSubpixelBits;
+  out.minx = static_cast<int>(std::max<int64_t>(px0, cx0));
+  out.maxx = static_cast<int>(std::min<int64_t>(px1, cx1));
+  out.miny = static_cast<int>(std::max<int64_t>(py0, cy0));
+  out.maxy = static_cast<int>(std::min<int64_t>(py1, cy1));
+  if (out.minx > out.maxx || out.miny > out.maxy) return false;
+
   const int64_t x0 = t.x[0], y0 = t.y[0];
   const int64_t area2 = (t.x[1] - x0) * (t.y[2] - y0) - (t.x[2] - x0) * (t.y[1] - y0);
   if (area2 == 0) return false; // GL 2.1 §3.5.1: zero area produces no fragments
@@ -30,21 +46,7 @@ bool setup_edges(const SnappedTri& t, int cx0, int cy0, int cx1, int cy1, TriEdg
     out.e[i].sx = A * kSubpixelOne;
     out.e[i].sy = B * kSubpixelOne;
   }
-
-  const int64_t min_x = std::min({t.x[0], t.x[1], t.x[2]});
-  const int64_t max_x = std::max({t.x[0], t.x[1], t.x[2]});
-  const int64_t min_y = std::min({t.y[0], t.y[1], t.y[2]});
-  const int64_t max_y = std::max({t.y[0], t.y[1], t.y[2]});
-  // Pixels whose centres lie in [min, max]: ceil((min - 128) / 256) .. floor((max - 128) / 256).
-  const int64_t px0 = (min_x - kHalfPixel + kSubpixelOne - 1) >> kSubpixelBits;
-  const int64_t px1 = (max_x - kHalfPixel) >> kSubpixelBits;
-  const int64_t py0 = (min_y - kHalfPixel + kSubpixelOne - 1) >> kSubpixelBits;
-  const int64_t py1 = (max_y - kHalfPixel) >> kSubpixelBits;
-  out.minx = static_cast<int>(std::max<int64_t>(px0, cx0));
-  out.maxx = static_cast<int>(std::min<int64_t>(px1, cx1));
-  out.miny = static_cast<int>(std::max<int64_t>(py0, cy0));
-  out.maxy = static_cast<int>(std::min<int64_t>(py1, cy1));
-  return out.minx <= out.maxx && out.miny <= out.maxy;
+  return true;
 }
 
 PlaneSetup make_plane_setup(const SnappedTri& t) {
@@ -87,8 +89,8 @@ ShadePath setup_triangle_inputs(const FragCtx& ctx, const PlaneSetup& ps, const 
   in.oy = ps.oy;
   // GL 2.1 §3.5.1 eq 3.10: window z is interpolated linearly, without perspective.
   if (ctx.needs_depth)
-    in.z = plane_d(ps, a.win[2] * ctx.depth_max, b.win[2] * ctx.depth_max,
-                   c.win[2] * ctx.depth_max);
+    in.z =
+        plane_d(ps, a.win[2] * ctx.depth_max, b.win[2] * ctx.depth_max, c.win[2] * ctx.depth_max);
   if (!ctx.needs_color) return ShadePath::Const;
   // GL 2.1 §2.14.7: flat shading takes the provoking vertex's colour.
   if (flat) {
@@ -99,7 +101,8 @@ ShadePath setup_triangle_inputs(const FragCtx& ctx, const PlaneSetup& ps, const 
   const float* cb = b.attr + color_slot;
   const float* cc = c.attr + color_slot;
   bool same = true;
-  for (int k = 0; k < 4; ++k) same = same && ca[k] == cb[k] && ca[k] == cc[k];
+  for (int k = 0; k < 4; ++k)
+    same = same && ca[k] == cb[k] && ca[k] == cc[k];
   if (same) {
     const_color(a, color_slot, in.const_color);
     return ShadePath::Const;
@@ -107,7 +110,8 @@ ShadePath setup_triangle_inputs(const FragCtx& ctx, const PlaneSetup& ps, const 
   // GL 2.1 §3.5.1 eq 3.9: interpolate c/w and 1/w linearly, divide per fragment.
   const double wa = a.win[3], wb = b.win[3], wc = c.win[3];
   in.inv_w = plane_f(ps, wa, wb, wc);
-  for (int k = 0; k < 4; ++k) in.color_w[k] = plane_f(ps, ca[k] * wa, cb[k] * wb, cc[k] * wc);
+  for (int k = 0; k < 4; ++k)
+    in.color_w[k] = plane_f(ps, ca[k] * wa, cb[k] * wb, cc[k] * wc);
   return ShadePath::Smooth;
 }
 
