@@ -62,10 +62,10 @@ struct IndexedFetch {
 
 template <class Sink> class Assembler {
 public:
-  Assembler(const DrawCall& dc, Sink& sink) : sink_(sink), stipple_counter_(dc.stipple_counter) {
+  Assembler(const DrawCall& dc, Sink& sink)
+      : sink_(sink), stipple_counter_(dc.stipple_counter), state_(*dc.state) {
     const RasterState& rs = *dc.state;
     init_face_state(face_, rs);
-    init_clip_setup(clip_, rs);
     fill_fast_ = rs.polygon_mode[0] == GL_FILL && rs.polygon_mode[1] == GL_FILL && !rs.two_sided;
     outlined_ = rs.polygon_mode[0] != GL_FILL || rs.polygon_mode[1] != GL_FILL;
   }
@@ -130,10 +130,22 @@ private:
     if (outlined_) reset_stipple();
   }
 
+  // The clipper's setup, made when the draw's first primitive needs clipping: a draw of one
+  // unclipped triangle (immediate mode) does not pay for it.
+  const ClipSetup& clip_setup() {
+    if (!clip_ready_) {
+      init_clip_setup(clip_, state_);
+      clip_ready_ = true;
+    }
+    return clip_;
+  }
+
   Sink& sink_;
   float* stipple_counter_ = nullptr;
+  const RasterState& state_;
   FaceState face_;
   ClipSetup clip_;
+  bool clip_ready_ = false;
   // Both faces FILL and one-sided colours: an unclipped triangle needs no edge flags, no
   // colour swap and no fan, only the rasterizer call.
   bool fill_fast_ = true;
@@ -146,7 +158,8 @@ template <class Sink>
   ClipScratch scratch;
   const PVertex* ca = nullptr;
   const PVertex* cb = nullptr;
-  if (!clip_segment(clip_, planes_for_mask(a.clipmask | b.clipmask), a, b, scratch, &ca, &cb))
+  if (!clip_segment(clip_setup(), planes_for_mask(a.clipmask | b.clipmask), a, b, scratch, &ca,
+                    &cb))
     return;
   // The original second vertex keeps supplying the flat colour.
   sink_.line(*ca, *cb, b);
@@ -165,7 +178,8 @@ template <class Sink>
   poly.edge[0] = (edges & kEdgeAB) != 0;
   poly.edge[1] = (edges & kEdgeBC) != 0;
   poly.edge[2] = (edges & kEdgeCA) != 0;
-  if (!clip_polygon(clip_, planes_for_mask(a.clipmask | b.clipmask | c.clipmask), poly, scratch))
+  if (!clip_polygon(clip_setup(), planes_for_mask(a.clipmask | b.clipmask | c.clipmask), poly,
+                    scratch))
     return;
   // Facing of what remains (GL 2.1 §3.5.1: facing is decided after clipping), from the same
   // snapped coordinates the rasterizer sees.
@@ -369,16 +383,24 @@ void draw_shared(const DrawCall& dc, const FragCtx& frag, int n, GLenum mode, co
 
 } // namespace
 
+// A draw without the context's fragment setup (tests calling the back end directly): made
+// here, out of the line of the common path, whose FragCtx would otherwise be built per draw.
+[[gnu::noinline]] static void draw_with_local_frag(const DrawCall& dc, GLenum mode,
+                                                   const PVertex* verts, const uint32_t* indices,
+                                                   size_t count) {
+  FragCtx local;
+  prepare_fragments(*dc.state, *dc.fb, local);
+  DrawCall with = dc;
+  with.frag = &local;
+  draw_primitives(with, mode, verts, indices, count);
+}
+
 void draw_primitives(const DrawCall& dc, GLenum mode, const PVertex* verts, const uint32_t* indices,
                      size_t count) {
   // The fragment stage is set up once for the whole draw, not once per primitive, or comes
   // with the draw (the context's draw cache).
-  FragCtx local;
+  if (dc.frag == nullptr) return draw_with_local_frag(dc, mode, verts, indices, count);
   const FragCtx* frag = dc.frag;
-  if (frag == nullptr) {
-    prepare_fragments(*dc.state, *dc.fb, local);
-    frag = &local;
-  }
   frag->samples_passed = 0;
   // The thread count first: with one thread (PINEDA_THREADS=1) no draw pays for the estimate.
   const int n = dc.workers != nullptr ? dc.workers->threads() : 1;

@@ -173,6 +173,10 @@ void traverse(const TriEdges& te, const FragCtx& ctx, const FragInputs& in, Bloc
   }
 }
 
+// Bounding boxes of at most this many pixels inside one block are tested pixel by pixel
+// before the planes are set up (raster_triangle); larger ones go through traverse.
+constexpr int kSmallBox = 16;
+
 // Inlined into raster_triangle: with one-pixel triangles the call itself is a measurable part
 // of the cost.
 [[gnu::always_inline]] inline void triangle(const DrawCall& dc, const FragCtx& ctx,
@@ -193,13 +197,14 @@ void traverse(const TriEdges& te, const FragCtx& ctx, const FragInputs& in, Bloc
   if (!setup_edges(t, ctx.clip_x0, ctx.clip_y0, ctx.clip_x1, ctx.clip_y1, te)) return;
   const RasterState& rs = *dc.state;
   const RasterModes& modes = rs.modes;
-  // A bounding box inside one block (most small triangles): its coverage is found before any
+  // A small bounding box inside one block (most small triangles): its coverage is found before any
   // plane is set up, so a triangle that covers no pixel centre costs no more, and the block
   // goes straight to the fragment stage. The mask is the one traverse would find (the exact
   // edge tests inside the bounding box).
   constexpr int B = kBlockSize;
   const int bx = te.minx & ~(B - 1), by = te.miny & ~(B - 1);
-  const bool one_block = bx == (te.maxx & ~(B - 1)) && by == (te.maxy & ~(B - 1));
+  const bool one_block = bx == (te.maxx & ~(B - 1)) && by == (te.maxy & ~(B - 1)) &&
+                         (te.maxx - te.minx + 1) * (te.maxy - te.miny + 1) <= kSmallBox;
   uint64_t mask = 0;
   if (one_block) {
     if (!dc.bands.owns(by)) return;
