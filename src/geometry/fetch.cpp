@@ -59,19 +59,37 @@ template <typename T> inline float to_float(T v, bool normalized) {
   return static_cast<float>(v);
 }
 
-// Copy `a.size` components of each element into dst (one float[4] per vertex, at byte
-// offset `field` inside InputVertex), leaving the remaining components as they are.
-template <typename T, typename Elements>
-void convert(const uint8_t* base, size_t stride, int size, bool normalized, Elements el, size_t n,
-             InputVertex* out, size_t field) {
+// Copy kSize components of each element into dst (one float[4] per vertex, at byte offset
+// `field` inside InputVertex), leaving the remaining components as they are.
+template <typename T, int kSize, typename Elements>
+void convert_n(const uint8_t* base, size_t stride, bool normalized, Elements el, size_t n,
+               InputVertex* out, size_t field) {
   for (size_t k = 0; k < n; ++k) {
     const uint8_t* src = base + el[k] * stride;
     float* dst = reinterpret_cast<float*>(reinterpret_cast<uint8_t*>(&out[k]) + field);
-    for (int c = 0; c < size; ++c) {
+    for (int c = 0; c < kSize; ++c) {
       T v;
       std::memcpy(&v, src + c * sizeof(T), sizeof(T));
       dst[c] = to_float(v, normalized);
     }
+  }
+}
+
+// The component count as a constant, so that the per-element copy has no inner loop.
+template <typename T, typename Elements>
+void convert(const uint8_t* base, size_t stride, int size, bool normalized, Elements el, size_t n,
+             InputVertex* out, size_t field) {
+  switch (size) {
+  case 1:
+    return convert_n<T, 1>(base, stride, normalized, el, n, out, field);
+  case 2:
+    return convert_n<T, 2>(base, stride, normalized, el, n, out, field);
+  case 3:
+    return convert_n<T, 3>(base, stride, normalized, el, n, out, field);
+  case 4:
+    return convert_n<T, 4>(base, stride, normalized, el, n, out, field);
+  default:
+    return;
   }
 }
 
