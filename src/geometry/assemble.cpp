@@ -16,6 +16,7 @@
 #include "geometry/clip.h"
 #include "geometry/cull.h"
 #include "raster/raster.h"
+#include "raster/setup.h"
 
 namespace pineda {
 
@@ -43,6 +44,11 @@ struct RasterSink {
                 bool back) {
     raster_triangle(dc, a, b, c, provoking, back);
   }
+  // The hot path: the positions come snapped from the facing test.
+  void triangle_snapped(const SnappedTri& t, const PVertex& a, const PVertex& b, const PVertex& c,
+                        const PVertex& provoking, bool back) {
+    raster_triangle_snapped(dc, t, a, b, c, provoking, back);
+  }
   void line(const PVertex& a, const PVertex& b, const PVertex& provoking) {
     raster_line(dc, a, b, provoking);
   }
@@ -63,7 +69,7 @@ struct IndexedFetch {
 template <class Sink> class Assembler {
 public:
   Assembler(const DrawCall& dc, Sink& sink)
-      : sink_(sink), stipple_counter_(dc.stipple_counter), state_(*dc.state) {
+      : sink_(sink), stipple_counter_(dc.stipple_counter), state_(*dc.state), bands_(dc.bands) {
     const RasterState& rs = *dc.state;
     init_face_state(face_, rs);
     fill_fast_ = rs.polygon_mode[0] == GL_FILL && rs.polygon_mode[1] == GL_FILL && !rs.two_sided;
@@ -103,17 +109,35 @@ private:
       triangle_clipped(a, b, c, edges, pv);
       return;
     }
-    const int64_t area2 = fixed_area2(a, b, c);
+    // A worker sharing the draw (draw_shared) skips at once the filled triangles that lie
+    // outside its rows, whichever way they face: raster_triangle would draw nothing of them.
+    if (fill_fast_ && bands_.count > 1 && !rows_owned(a, b, c)) return;
+    const SnappedTri t = snap_triangle(a, b, c);
+    const int64_t area2 = snapped_area2(t);
     const bool back = is_back_facing(face_, area2);
     if (is_culled(face_, back)) return;
     if (fill_fast_) {
-      if (area2 != 0 || Sink::kKeepsZeroArea) sink_.triangle(a, b, c, pv, back);
+      if (area2 != 0 || Sink::kKeepsZeroArea) {
+        if constexpr (requires { sink_.triangle_snapped(t, a, b, c, pv, back); })
+          sink_.triangle_snapped(t, a, b, c, pv, back);
+        else
+          sink_.triangle(a, b, c, pv, back);
+      }
       return;
     }
     const PVertex* v[3] = {&a, &b, &c};
     const bool e[3] = {(edges & kEdgeAB) != 0, (edges & kEdgeBC) != 0, (edges & kEdgeCA) != 0};
     // Mesa outlines an unclipped triangle starting with its closing edge c->a.
     emit_polygon(face_, sink_, v, e, 3, 2, pv, back, area2);
+  }
+
+  // Whether any pixel row a triangle of unclipped vertices may cover is this worker's: the
+  // rows of its window y range, widened by one each way for the snapping.
+  bool rows_owned(const PVertex& a, const PVertex& b, const PVertex& c) const {
+    const float y0 = std::min({a.win[1], b.win[1], c.win[1]});
+    const float y1 = std::max({a.win[1], b.win[1], c.win[1]});
+    // Inside the guard band (clip code zero), so the conversions are in range.
+    return bands_.owns_any(static_cast<int>(y0) - 1, static_cast<int>(y1) + 1);
   }
 
   void line_clipped(const PVertex& a, const PVertex& b);
@@ -143,6 +167,7 @@ private:
   Sink& sink_;
   float* stipple_counter_ = nullptr;
   const RasterState& state_;
+  Bands bands_;
   FaceState face_;
   ClipSetup clip_;
   bool clip_ready_ = false;

@@ -180,10 +180,10 @@ constexpr int kSmallBox = 16;
 // Inlined into raster_triangle: with one-pixel triangles the call itself is a measurable part
 // of the cost.
 [[gnu::always_inline]] inline void triangle(const DrawCall& dc, const FragCtx& ctx,
-                                            const PVertex& a, const PVertex& b, const PVertex& c,
-                                            const PVertex& provoking, bool back_facing) {
+                                            const SnappedTri& t, const PVertex& a, const PVertex& b,
+                                            const PVertex& c, const PVertex& provoking,
+                                            bool back_facing) {
   if (ctx.noop) return;
-  const SnappedTri t = snap_triangle(a, b, c);
   if (dc.bands.count > 1) {
     // Another worker draws the whole triangle: skip its setup. Pixel centres inside lie in
     // the rows from floor(ymin) to floor(ymax).
@@ -244,10 +244,20 @@ constexpr int kSmallBox = 16;
 
 void raster_triangle(const DrawCall& dc, const PVertex& a, const PVertex& b, const PVertex& c,
                      const PVertex& provoking, bool back_facing) {
-  if (dc.frag != nullptr) return triangle(dc, *dc.frag, a, b, c, provoking, back_facing);
+  const SnappedTri t = snap_triangle(a, b, c);
+  if (dc.frag != nullptr) return triangle(dc, *dc.frag, t, a, b, c, provoking, back_facing);
   FragCtx ctx;
   prepare_fragments(*dc.state, *dc.fb, ctx);
-  triangle(dc, ctx, a, b, c, provoking, back_facing);
+  triangle(dc, ctx, t, a, b, c, provoking, back_facing);
+}
+
+void raster_triangle_snapped(const DrawCall& dc, const SnappedTri& t, const PVertex& a,
+                             const PVertex& b, const PVertex& c, const PVertex& provoking,
+                             bool back_facing) {
+  if (dc.frag != nullptr) return triangle(dc, *dc.frag, t, a, b, c, provoking, back_facing);
+  FragCtx ctx;
+  prepare_fragments(*dc.state, *dc.fb, ctx);
+  triangle(dc, ctx, t, a, b, c, provoking, back_facing);
 }
 
 } // namespace pineda
