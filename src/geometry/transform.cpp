@@ -53,6 +53,12 @@ DrawCache& current_draw_cache(Context* ctx) {
 // thread; below it, waking the workers costs more than it saves.
 constexpr size_t kShareVertexCount = 4096;
 
+// Vertices per slice of a large draw of independent primitives (draw_vertices_once): a
+// multiple of 1, 2, 3 and 4 vertices, and at least kShareVertexCount so that a slice's
+// transform is still shared among the workers.
+constexpr size_t kSliceVertices = 12 * 2048;
+static_assert(kSliceVertices >= kShareVertexCount);
+
 // What the per-vertex loop reads, gathered once per draw.
 struct VertexJob {
   const InputVertex* in;
@@ -221,28 +227,26 @@ void draw_vertices_once(Context* ctx, GLenum mode, const InputVertex* in, size_t
   // Vertices are independent of each other, so a large draw's are split into one contiguous
   // range per worker thread (raster/workers.h). Material changes between Begin and End
   // (immediate mode, a few vertices) depend on the vertex index: they stay on one thread.
-  const int threads = n >= kShareVertexCount && job.change_count == 0 ? ctx->workers.threads() : 1;
-  if (threads > 1) {
+  const auto transform_range = [&](size_t first, size_t m, PVertex* dst) {
+    VertexJob range = job;
+    range.in = in + first;
+    range.out = dst;
+    range.n = m;
+    const int threads =
+        m >= kShareVertexCount && job.change_count == 0 ? ctx->workers.threads() : 1;
+    if (threads <= 1) return transform(range);
     auto part = [&](int i) {
-      VertexJob j = job;
-      const size_t first = n * static_cast<size_t>(i) / static_cast<size_t>(threads);
-      const size_t last = n * static_cast<size_t>(i + 1) / static_cast<size_t>(threads);
-      j.in = in + first;
-      j.out = job.out + first;
-      j.n = last - first;
+      VertexJob j = range;
+      const auto t = static_cast<size_t>(threads);
+      const size_t lo = m * static_cast<size_t>(i) / t, hi = m * static_cast<size_t>(i + 1) / t;
+      j.in = range.in + lo;
+      j.out = range.out + lo;
+      j.n = hi - lo;
       transform(j);
     };
     ctx->workers.run(part);
-  } else {
-    transform(job);
-  }
+  };
 
-  // GL 2.1 §5.2, §5.3: in SELECT and FEEDBACK mode the primitives go to selection or
-  // feedback instead of the rasterizer.
-  if (!render_mode_is_render(ctx)) {
-    select_feedback_draw(ctx, in, out.data(), n, mode, indices, count);
-    return;
-  }
   Framebuffer& fb = ctx->fb;
   DrawCall dc;
   dc.state = &rs;
@@ -250,6 +254,31 @@ void draw_vertices_once(Context* ctx, GLenum mode, const InputVertex* in, size_t
   dc.frag = &cache.frag;
   if (rs.count_samples) dc.samples_passed = &ctx->queries.samples_passed;
   dc.workers = &ctx->workers;
+
+  // Independent points, segments, triangles and quads in order (a large glBegin/glEnd or
+  // DrawArrays) are transformed and drawn a slice at a time, so that the processed vertices
+  // are still in the cache when they are drawn. Each slice holds whole primitives and the
+  // primitives reach the rasterizer in the same order; no state crosses a slice boundary
+  // (the line stipple restarts with every independent segment and outlined polygon).
+  const bool independent =
+      mode == GL_POINTS || mode == GL_LINES || mode == GL_TRIANGLES || mode == GL_QUADS;
+  if (independent && indices == nullptr && count == n && n > kSliceVertices &&
+      job.change_count == 0 && render_mode_is_render(ctx)) {
+    for (size_t first = 0; first < n; first += kSliceVertices) {
+      const size_t m = std::min(kSliceVertices, n - first);
+      transform_range(first, m, out.data());
+      draw_primitives(dc, mode, out.data(), nullptr, m);
+    }
+    return;
+  }
+
+  transform_range(0, n, out.data());
+  // GL 2.1 §5.2, §5.3: in SELECT and FEEDBACK mode the primitives go to selection or
+  // feedback instead of the rasterizer.
+  if (!render_mode_is_render(ctx)) {
+    select_feedback_draw(ctx, in, out.data(), n, mode, indices, count);
+    return;
+  }
   draw_primitives(dc, mode, out.data(), indices, count);
 }
 
