@@ -183,11 +183,9 @@ void draw_vertices_once(Context* ctx, GLenum mode, const InputVertex* in, size_t
   DrawCache& cache = current_draw_cache(ctx);
 
   std::vector<PVertex>& out = ctx->pvert_scratch;
-  if (out.size() < n) out.resize(n);
-
   VertexJob job;
   job.in = in;
-  job.out = out.data();
+  job.out = nullptr; // set once `out` has its size
   job.n = n;
   job.m = &ctx->mvp[0][0];
   job.cs = &cache.clip;
@@ -227,13 +225,10 @@ void draw_vertices_once(Context* ctx, GLenum mode, const InputVertex* in, size_t
   // Vertices are independent of each other, so a large draw's are split into one contiguous
   // range per worker thread (raster/workers.h). Material changes between Begin and End
   // (immediate mode, a few vertices) depend on the vertex index: they stay on one thread.
-  const auto transform_range = [&](size_t first, size_t m, PVertex* dst) {
-    VertexJob range = job;
-    range.in = in + first;
-    range.out = dst;
-    range.n = m;
+  const auto transform_all = [&](const VertexJob& range) {
+    const size_t m = range.n;
     const int threads =
-        m >= kShareVertexCount && job.change_count == 0 ? ctx->workers.threads() : 1;
+        m >= kShareVertexCount && range.change_count == 0 ? ctx->workers.threads() : 1;
     if (threads <= 1) return transform(range);
     auto part = [&](int i) {
       VertexJob j = range;
@@ -262,17 +257,23 @@ void draw_vertices_once(Context* ctx, GLenum mode, const InputVertex* in, size_t
   // (the line stipple restarts with every independent segment and outlined polygon).
   const bool independent =
       mode == GL_POINTS || mode == GL_LINES || mode == GL_TRIANGLES || mode == GL_QUADS;
-  if (independent && indices == nullptr && count == n && n > kSliceVertices &&
+  if (n > kSliceVertices && independent && indices == nullptr && count == n &&
       job.change_count == 0 && render_mode_is_render(ctx)) {
+    if (out.size() < kSliceVertices) out.resize(kSliceVertices);
     for (size_t first = 0; first < n; first += kSliceVertices) {
-      const size_t m = std::min(kSliceVertices, n - first);
-      transform_range(first, m, out.data());
-      draw_primitives(dc, mode, out.data(), nullptr, m);
+      VertexJob slice = job;
+      slice.in = in + first;
+      slice.out = out.data();
+      slice.n = std::min(kSliceVertices, n - first);
+      transform_all(slice);
+      draw_primitives(dc, mode, out.data(), nullptr, slice.n);
     }
     return;
   }
 
-  transform_range(0, n, out.data());
+  if (out.size() < n) out.resize(n);
+  job.out = out.data();
+  transform_all(job);
   // GL 2.1 §5.2, §5.3: in SELECT and FEEDBACK mode the primitives go to selection or
   // feedback instead of the rasterizer.
   if (!render_mode_is_render(ctx)) {

@@ -14,6 +14,7 @@
 #include <glm/gtc/matrix_transform.hpp>
 #include <glm/mat4x4.hpp>
 
+#include "api_fixture.h"
 #include "geometry/clip.h"
 #include "geometry/light_eval.h"
 #include "geometry/vertex_simd.h"
@@ -145,3 +146,52 @@ TEST(VertexSimd, LightingMatchesScalar) {
 
 } // namespace
 } // namespace pineda
+
+// A DrawArrays of independent triangles longer than one slice (transform.cpp draws such a draw
+// a slice of vertices at a time) gives the pixels and the sample count of the same triangles
+// drawn by calls short enough to be drawn whole.
+class SlicedDrawTest : public GLTest {};
+
+TEST_F(SlicedDrawTest, LongTriangleListMatchesShortDraws) {
+  constexpr int kTris = 12000; // 36000 vertices, above one slice
+  std::vector<float> pos, col;
+  std::mt19937 rng(5);
+  std::uniform_real_distribution<float> u(0.0f, 1.0f);
+  for (int i = 0; i < kTris; ++i) {
+    const float x = -1.0f + 2.0f * u(rng), y = -1.0f + 2.0f * u(rng);
+    const float d[3][2] = {{0.0f, 0.0f}, {0.3f * u(rng), 0.02f}, {0.01f, 0.3f * u(rng)}};
+    for (const auto& v : d) {
+      pos.insert(pos.end(), {x + v[0], y + v[1], u(rng) * 2.0f - 1.0f});
+      col.insert(col.end(), {u(rng), u(rng), u(rng)});
+    }
+  }
+  glEnable(GL_DEPTH_TEST);
+  glEnableClientState(GL_VERTEX_ARRAY);
+  glEnableClientState(GL_COLOR_ARRAY);
+  glVertexPointer(3, GL_FLOAT, 0, pos.data());
+  glColorPointer(3, GL_FLOAT, 0, col.data());
+  GLuint q[2];
+  glGenQueries(2, q);
+  std::vector<uint8_t> image[2];
+  for (int pass = 0; pass < 2; ++pass) {
+    glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+    glBeginQuery(GL_SAMPLES_PASSED, q[pass]);
+    if (pass == 0) {
+      glDrawArrays(GL_TRIANGLES, 0, 3 * kTris);
+    } else {
+      constexpr int kPart = 3 * 1000;
+      for (int first = 0; first < 3 * kTris; first += kPart)
+        glDrawArrays(GL_TRIANGLES, first, kPart);
+    }
+    glEndQuery(GL_SAMPLES_PASSED);
+    glFinish();
+    image[pass] = buf_;
+  }
+  GLuint samples[2];
+  glGetQueryObjectuiv(q[0], GL_QUERY_RESULT, &samples[0]);
+  glGetQueryObjectuiv(q[1], GL_QUERY_RESULT, &samples[1]);
+  EXPECT_GT(samples[0], 0u);
+  EXPECT_EQ(samples[0], samples[1]);
+  EXPECT_EQ(image[0], image[1]);
+  EXPECT_EQ(glGetError(), static_cast<GLenum>(GL_NO_ERROR));
+}
