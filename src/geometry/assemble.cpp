@@ -137,7 +137,7 @@ private:
     const float y0 = std::min({a.win[1], b.win[1], c.win[1]});
     const float y1 = std::max({a.win[1], b.win[1], c.win[1]});
     // Inside the guard band (clip code zero), so the conversions are in range.
-    return bands_.owns_any(static_cast<int>(y0) - 1, static_cast<int>(y1) + 1);
+    return bands_own_rows(bands_, static_cast<int>(y0) - 1, static_cast<int>(y1) + 1);
   }
 
   void line_clipped(const PVertex& a, const PVertex& b);

@@ -124,7 +124,7 @@ void traverse(const TriEdges& te, const FragCtx& ctx, const FragInputs& in, Bloc
   const Edges32 e32 = make_edges32(te);
 
   for (int by = te.miny & ~(B - 1); by <= te.maxy; by += B) {
-    if (!bands.owns(by)) continue;
+    if (!bands_own(bands, by)) continue;
     int64_t lo = bx_first, hi = bx_last;
     int64_t erow[3];
     bool skip = false;
@@ -189,8 +189,8 @@ constexpr int kSmallBox = 16;
     // the rows from floor(ymin) to floor(ymax).
     const int32_t ymin = std::min({t.y[0], t.y[1], t.y[2]});
     const int32_t ymax = std::max({t.y[0], t.y[1], t.y[2]});
-    if (!dc.bands.owns_any(std::max(ymin >> kSubpixelBits, ctx.clip_y0),
-                           std::min(ymax >> kSubpixelBits, ctx.clip_y1)))
+    if (!bands_own_rows(dc.bands, std::max(ymin >> kSubpixelBits, ctx.clip_y0),
+                        std::min(ymax >> kSubpixelBits, ctx.clip_y1)))
       return;
   }
   TriEdges te;
@@ -207,7 +207,7 @@ constexpr int kSmallBox = 16;
                          (te.maxx - te.minx + 1) * (te.maxy - te.miny + 1) <= kSmallBox;
   uint64_t mask = 0;
   if (one_block) {
-    if (!dc.bands.owns(by)) return;
+    if (!bands_own(dc.bands, by)) return;
     int64_t e[3];
     for (int i = 0; i < 3; ++i)
       e[i] = te.e[i].base + by * te.e[i].sy + bx * te.e[i].sx;

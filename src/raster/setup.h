@@ -50,6 +50,27 @@ inline SnappedTri snap_triangle(const PVertex& a, const PVertex& b, const PVerte
           {to_fixed(a.win[1]), to_fixed(b.win[1]), to_fixed(c.win[1])}};
 }
 
+// Bands::owns and Bands::owns_any (workers.h) with a mask instead of a division when the
+// thread count is a power of two: the triangle path asks once or twice per triangle.
+inline bool band_owned(const Bands& b, unsigned band) {
+  const auto n = static_cast<unsigned>(b.count), i = static_cast<unsigned>(b.index);
+  return ((n & (n - 1)) == 0 ? (band & (n - 1)) : band % n) == i;
+}
+inline bool bands_own(const Bands& b, int y) {
+  return b.count == 1 || band_owned(b, static_cast<unsigned>(y >> kBandShift));
+}
+inline bool bands_own_rows(const Bands& b, int y0, int y1) {
+  if (b.count == 1) return true;
+  y0 = y0 > 0 ? y0 : 0;
+  if (y1 < y0) return false;
+  const auto b0 = static_cast<unsigned>(y0 >> kBandShift),
+             b1 = static_cast<unsigned>(y1 >> kBandShift);
+  if (b1 - b0 + 1 >= static_cast<unsigned>(b.count)) return true;
+  for (unsigned band = b0; band <= b1; ++band)
+    if (band_owned(b, band)) return true;
+  return false;
+}
+
 // Twice the signed area of a snapped triangle, as fixed_area2 (raster.h) computes it.
 inline int64_t snapped_area2(const SnappedTri& t) {
   const int64_t x0 = t.x[0], y0 = t.y[0];
