@@ -73,21 +73,33 @@ inline Edges32 make_edges32(const TriEdges& te) {
   return v;
 }
 
+// Eight bits, set where a lane of lo (bits 0-3) or hi (bits 4-7) is negative.
+inline unsigned negative_lanes(i32x4 lo, i32x4 hi) {
+#if defined(__SSE2__)
+  return lane_bits(lo, hi); // the sign bits themselves
+#else
+  const i32x4 zero = {};
+  return lane_bits(lo < zero, hi < zero);
+#endif
+}
+
 inline uint64_t partial_mask32(const Edges32& v, const int64_t e[3]) {
   i32x4 row[3];
   for (int i = 0; i < 3; ++i)
     row[i] = i32x4{} + static_cast<int32_t>(e[i]);
-  const i32x4 zero = {};
-  uint64_t mask = 0;
+  // The OR of the three edge values is negative exactly where some edge excludes the pixel:
+  // its sign bits, collected as lane masks, are the pixels outside; the mask is their
+  // complement.
+  uint64_t outside = 0;
   for (int r = 0; r < kBlockSize; ++r) {
     const i32x4 lo = (row[0] + v.lane_lo[0]) | (row[1] + v.lane_lo[1]) | (row[2] + v.lane_lo[2]);
     const i32x4 hi = (row[0] + v.lane_hi[0]) | (row[1] + v.lane_hi[1]) | (row[2] + v.lane_hi[2]);
-    mask |= static_cast<uint64_t>(lane_bits(lo >= zero, hi >= zero)) << (8 * r);
+    outside |= static_cast<uint64_t>(negative_lanes(lo, hi)) << (8 * r);
     if (r + 1 < kBlockSize) // stay within the bound: no step past the last row
       for (int i = 0; i < 3; ++i)
         row[i] += v.sy[i];
   }
-  return mask;
+  return ~outside;
 }
 
 // Bounding boxes wider than this get the block range of each block row narrowed to the
