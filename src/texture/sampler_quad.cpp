@@ -45,103 +45,124 @@ void quad_fallback(const SamplerView& v, const float* s, const float* t, float l
 // One level as the vector path reads it.
 struct QuadLevel {
   const uint8_t* rgba;
-  float fw, fh;      // sizes without border, as floats
-  int w, h;          // sizes without border
-  int row;           // texels per stored row (border included)
-  int bi, bj;        // border offsets
-  bool rep_s, rep_t; // REPEAT (power-of-two size): wrap by mask; else CLAMP_TO_EDGE
+  float fw, fh;           // sizes without border, as floats
+  __m128i last_s, last_t; // size - 1 (REPEAT: the wrap mask; CLAMP_TO_EDGE: the last index)
+  __m128i border;         // border offset of both axes
+  __m128i row;            // texels per stored row (border included), for pmaddwd
 };
 
 // llvmpipe's linear step with a weight per lane: a + floor(((b - a) w + 128) / 256), written as
 // (a (256 - w) + b w + 128) / 256 (the same value: a 256 is a multiple of 256), whose every
-// term fits an unsigned 16-bit lane for a, b, w in [0, 255].
-inline u16x8 lerp_w(u16x8 a, u16x8 b, u16x8 w) {
-  const u16x8 k256 = u16x8{} + 256, k128 = u16x8{} + 128;
-  return (a * (k256 - w) + b * w + k128) >> 8;
+// term fits an unsigned 16-bit lane for a, b, w in [0, 255]. `iw` is 256 - w.
+inline __m128i lerp_w(__m128i a, __m128i b, __m128i w, __m128i iw) {
+  const __m128i sum = _mm_add_epi16(_mm_mullo_epi16(a, iw), _mm_mullo_epi16(b, w));
+  return _mm_srli_epi16(_mm_add_epi16(sum, _mm_set1_epi16(128)), 8);
 }
 
-inline i32x4 round_even4(f32x4 x) {
-  return reinterpret_cast<i32x4>(_mm_cvtps_epi32(x));
-}
-
-inline i32x4 select(i32x4 m, i32x4 a, i32x4 b) {
-  return (m & a) | (~m & b);
-}
-
-inline i32x4 clamp4(i32x4 v, int hi) {
-  const i32x4 zero = {}, top = zero + hi;
-  v = select(v < zero, zero, v);
-  return select(v > top, top, v);
-}
-
-inline uint32_t load_texel(const uint8_t* base, int index) {
-  uint32_t x;
-  std::memcpy(&x, base + static_cast<ptrdiff_t>(index) * 4, 4);
-  return x;
-}
-
-// Lanes 0..3 of `v` each repeated four times: the weights of fragments 0, 1 (lo) or 2, 3 (hi)
-// for their texels' four channels.
-inline u16x8 spread_lo(i32x4 v) {
-  const u16x8 h = reinterpret_cast<u16x8>(v);
-  return __builtin_shufflevector(h, h, 0, 0, 0, 0, 2, 2, 2, 2);
-}
-inline u16x8 spread_hi(i32x4 v) {
-  const u16x8 h = reinterpret_cast<u16x8>(v);
-  return __builtin_shufflevector(h, h, 4, 4, 4, 4, 6, 6, 6, 6);
+inline __m128i clamp4(__m128i v, __m128i last) {
+  v = _mm_andnot_si128(_mm_srai_epi32(v, 31), v); // negative -> 0
+  const __m128i over = _mm_cmpgt_epi32(v, last);
+  return _mm_or_si128(_mm_and_si128(over, last), _mm_andnot_si128(over, v));
 }
 
 // The axis of four coordinates: texel indices (border offset added) and 1/256 weights, as
-// sampler.cpp's axis_linear_fixed.
-inline void axis4(f32x4 s, float size_f, int size, bool repeat, int border, i32x4& i0, i32x4& i1,
-                  i32x4& w) {
-  const i32x4 u = round_even4(s * size_f * 256.0f) - 128;
-  w = u & 255;
-  i0 = u >> 8;
-  i1 = i0 + 1;
+// sampler.cpp's axis_linear_fixed (the conversion rounds to nearest even, as there).
+inline void axis4(__m128 s, float size_f, __m128i last, bool repeat, __m128i border, __m128i& i0,
+                  __m128i& i1, __m128i& w) {
+  const __m128 scaled = _mm_mul_ps(_mm_mul_ps(s, _mm_set1_ps(size_f)), _mm_set1_ps(256.0f));
+  const __m128i u = _mm_sub_epi32(_mm_cvtps_epi32(scaled), _mm_set1_epi32(128));
+  w = _mm_and_si128(u, _mm_set1_epi32(255));
+  i0 = _mm_srai_epi32(u, 8);
+  i1 = _mm_add_epi32(i0, _mm_set1_epi32(1));
   if (repeat) {
-    i0 &= size - 1;
-    i1 &= size - 1;
+    i0 = _mm_and_si128(i0, last);
+    i1 = _mm_and_si128(i1, last);
   } else {
-    i0 = clamp4(i0, size - 1);
-    i1 = clamp4(i1, size - 1);
+    i0 = clamp4(i0, last);
+    i1 = clamp4(i1, last);
   }
-  i0 += border;
-  i1 += border;
+  i0 = _mm_add_epi32(i0, border);
+  i1 = _mm_add_epi32(i1, border);
+}
+
+// Weights of lanes 0, 1 (lo) or 2, 3 (hi) of `w`, each repeated for a texel's four channels.
+inline __m128i spread_lo(__m128i w) {
+  const __m128i d = _mm_or_si128(w, _mm_slli_epi32(w, 16));
+  return _mm_unpacklo_epi32(d, d);
+}
+inline __m128i spread_hi(__m128i w) {
+  const __m128i d = _mm_or_si128(w, _mm_slli_epi32(w, 16));
+  return _mm_unpackhi_epi32(d, d);
+}
+
+inline __m128i texel(const uint8_t* base, int index) {
+  int32_t x;
+  std::memcpy(&x, base + static_cast<ptrdiff_t>(index) * 4, 4);
+  return _mm_cvtsi32_si128(x);
+}
+inline __m128i texel_pair(const uint8_t* base, int index) {
+  return _mm_loadl_epi64(
+      reinterpret_cast<const __m128i*>(base + static_cast<ptrdiff_t>(index) * 4));
+}
+
+// The texels at columns i0 and i1 of one row (texel offsets o0 = row + i0, o1 = row + i1) of
+// four fragments, widened: a_lo, b_lo the i0 and i1 texels of fragments 0 and 1, a_hi, b_hi of
+// fragments 2 and 3.
+inline void row_texels(const uint8_t* base, __m128i o0, __m128i o1, bool pairs, __m128i& a_lo,
+                       __m128i& b_lo, __m128i& a_hi, __m128i& b_hi) {
+  alignas(16) int32_t off0[4], off1[4];
+  _mm_store_si128(reinterpret_cast<__m128i*>(off0), o0);
+  const __m128i zero = _mm_setzero_si128();
+  __m128i x01, x23;
+  if (pairs) {
+    // i1 = i0 + 1 in every lane: one 8-byte load per fragment gives both texels.
+    x01 = _mm_unpacklo_epi64(texel_pair(base, off0[0]), texel_pair(base, off0[1]));
+    x23 = _mm_unpacklo_epi64(texel_pair(base, off0[2]), texel_pair(base, off0[3]));
+    x01 = _mm_shuffle_epi32(x01, _MM_SHUFFLE(3, 1, 2, 0));
+    x23 = _mm_shuffle_epi32(x23, _MM_SHUFFLE(3, 1, 2, 0));
+  } else {
+    _mm_store_si128(reinterpret_cast<__m128i*>(off1), o1);
+    x01 = _mm_unpacklo_epi64(_mm_unpacklo_epi32(texel(base, off0[0]), texel(base, off0[1])),
+                             _mm_unpacklo_epi32(texel(base, off1[0]), texel(base, off1[1])));
+    x23 = _mm_unpacklo_epi64(_mm_unpacklo_epi32(texel(base, off0[2]), texel(base, off0[3])),
+                             _mm_unpacklo_epi32(texel(base, off1[2]), texel(base, off1[3])));
+  }
+  a_lo = _mm_unpacklo_epi8(x01, zero);
+  b_lo = _mm_unpackhi_epi8(x01, zero);
+  a_hi = _mm_unpacklo_epi8(x23, zero);
+  b_hi = _mm_unpackhi_epi8(x23, zero);
 }
 
 // LINEAR filtering of one level at four coordinates: fragments 0 and 1 in `lo`, 2 and 3 in
 // `hi` (four 16-bit channels each).
-inline void bilinear4(const QuadLevel& l, f32x4 s, f32x4 t, u16x8& lo, u16x8& hi) {
-  i32x4 i0, i1, ws, j0, j1, wt;
-  axis4(s, l.fw, l.w, l.rep_s, l.bi, i0, i1, ws);
-  axis4(t, l.fh, l.h, l.rep_t, l.bj, j0, j1, wt);
-  const i32x4 r0 = j0 * l.row, r1 = j1 * l.row;
-  const i32x4 o00 = r0 + i0, o10 = r0 + i1, o01 = r1 + i0, o11 = r1 + i1;
-  const uint8_t* b = l.rgba;
-  const u32x4 p00 = {load_texel(b, o00[0]), load_texel(b, o00[1]), load_texel(b, o00[2]),
-                     load_texel(b, o00[3])};
-  const u32x4 p10 = {load_texel(b, o10[0]), load_texel(b, o10[1]), load_texel(b, o10[2]),
-                     load_texel(b, o10[3])};
-  const u32x4 p01 = {load_texel(b, o01[0]), load_texel(b, o01[1]), load_texel(b, o01[2]),
-                     load_texel(b, o01[3])};
-  const u32x4 p11 = {load_texel(b, o11[0]), load_texel(b, o11[1]), load_texel(b, o11[2]),
-                     load_texel(b, o11[3])};
-  const auto bytes = [](u32x4 x) { return reinterpret_cast<u8x16>(x); };
-  const u16x8 ws_lo = spread_lo(ws), ws_hi = spread_hi(ws);
-  const u16x8 wt_lo = spread_lo(wt), wt_hi = spread_hi(wt);
-  lo = lerp_w(lerp_w(widen_lo(bytes(p00)), widen_lo(bytes(p10)), ws_lo),
-              lerp_w(widen_lo(bytes(p01)), widen_lo(bytes(p11)), ws_lo), wt_lo);
-  hi = lerp_w(lerp_w(widen_hi(bytes(p00)), widen_hi(bytes(p10)), ws_hi),
-              lerp_w(widen_hi(bytes(p01)), widen_hi(bytes(p11)), ws_hi), wt_hi);
+inline void bilinear4(const QuadLevel& l, bool rep_s, bool rep_t, __m128 s, __m128 t, __m128i& lo,
+                      __m128i& hi) {
+  __m128i i0, i1, ws, j0, j1, wt;
+  axis4(s, l.fw, l.last_s, rep_s, l.border, i0, i1, ws);
+  axis4(t, l.fh, l.last_t, rep_t, l.border, j0, j1, wt);
+  // Indices and the row length are below 2^15: one pmaddwd multiplies.
+  const __m128i r0 = _mm_madd_epi16(j0, l.row), r1 = _mm_madd_epi16(j1, l.row);
+  const bool pairs =
+      _mm_movemask_epi8(_mm_cmpeq_epi32(i1, _mm_add_epi32(i0, _mm_set1_epi32(1)))) == 0xffff;
+  __m128i a0l, b0l, a0h, b0h, a1l, b1l, a1h, b1h;
+  row_texels(l.rgba, _mm_add_epi32(r0, i0), _mm_add_epi32(r0, i1), pairs, a0l, b0l, a0h, b0h);
+  row_texels(l.rgba, _mm_add_epi32(r1, i0), _mm_add_epi32(r1, i1), pairs, a1l, b1l, a1h, b1h);
+  const __m128i k256 = _mm_set1_epi16(256);
+  const __m128i wsl = spread_lo(ws), wsh = spread_hi(ws), wtl = spread_lo(wt), wth = spread_hi(wt);
+  const __m128i iwsl = _mm_sub_epi16(k256, wsl), iwsh = _mm_sub_epi16(k256, wsh);
+  const __m128i iwtl = _mm_sub_epi16(k256, wtl), iwth = _mm_sub_epi16(k256, wth);
+  lo = lerp_w(lerp_w(a0l, b0l, wsl, iwsl), lerp_w(a1l, b1l, wsl, iwsl), wtl, iwtl);
+  hi = lerp_w(lerp_w(a0h, b0h, wsh, iwsh), lerp_w(a1h, b1h, wsh, iwsh), wth, iwth);
 }
 
 // Whether every lane is a coordinate the 32-bit fixed point represents as sampler.cpp's
 // 64-bit one does: |s| within the sampler's 1e6 pin and |s size 256| below 2^31; false for NaN.
-inline bool coords_fit(f32x4 s, float size_f) {
-  const f32x4 a = reinterpret_cast<f32x4>(reinterpret_cast<i32x4>(s) & 0x7fffffff);
-  const i32x4 ok = (a <= 1.0e6f) & (a * size_f * 256.0f < 2147483520.0f);
-  return _mm_movemask_ps(reinterpret_cast<__m128>(ok)) == 0xf;
+inline bool coords_fit(__m128 s, float size_f) {
+  const __m128 a = _mm_and_ps(s, _mm_castsi128_ps(_mm_set1_epi32(0x7fffffff)));
+  const __m128 scaled = _mm_mul_ps(_mm_mul_ps(a, _mm_set1_ps(size_f)), _mm_set1_ps(256.0f));
+  const __m128 ok = _mm_and_ps(_mm_cmple_ps(a, _mm_set1_ps(1.0e6f)),
+                               _mm_cmplt_ps(scaled, _mm_set1_ps(2147483520.0f)));
+  return _mm_movemask_ps(ok) == 0xf;
 }
 
 #endif
@@ -179,6 +200,7 @@ void sample_quads(const SamplerView& v, int nq, const float* s, const float* t, 
   const GLenum minf = v.min_filter;
   const bool mip_linear = minf == GL_LINEAR_MIPMAP_LINEAR;
   const bool mip_nearest = minf == GL_LINEAR_MIPMAP_NEAREST;
+  const bool rep_s = v.wrap_s == GL_REPEAT, rep_t = v.wrap_t == GL_REPEAT;
   QuadLevel levels[kMaxTexLevels];
   unsigned ready = 0;
   const auto level = [&](int l) -> const QuadLevel& {
@@ -186,14 +208,13 @@ void sample_quads(const SamplerView& v, int nq, const float* s, const float* t, 
       const SamplerLevel& sl = v.levels[0][l];
       QuadLevel& q = levels[l];
       q.rgba = sl.rgba;
-      q.bi = q.bj = v.border;
-      q.w = sl.width - 2 * v.border;
-      q.h = sl.height - 2 * v.border;
-      q.fw = static_cast<float>(q.w);
-      q.fh = static_cast<float>(q.h);
-      q.row = sl.width;
-      q.rep_s = v.wrap_s == GL_REPEAT;
-      q.rep_t = v.wrap_t == GL_REPEAT;
+      const int w = sl.width - 2 * v.border, h = sl.height - 2 * v.border;
+      q.fw = static_cast<float>(w);
+      q.fh = static_cast<float>(h);
+      q.last_s = _mm_set1_epi32(w - 1);
+      q.last_t = _mm_set1_epi32(h - 1);
+      q.border = _mm_set1_epi32(v.border);
+      q.row = _mm_set1_epi32(sl.width);
       ready |= 1u << l;
     }
     return levels[l];
@@ -224,23 +245,22 @@ void sample_quads(const SamplerView& v, int nq, const float* s, const float* t, 
       }
       w8 = static_cast<int>(w * 256.0f);
     }
-    f32x4 sq, tq;
-    std::memcpy(&sq, s + 4 * q, sizeof(sq));
-    std::memcpy(&tq, t + 4 * q, sizeof(tq));
+    const __m128 sq = _mm_loadu_ps(s + 4 * q), tq = _mm_loadu_ps(t + 4 * q);
     const QuadLevel& l0 = level(d0);
     // The coarser level is the smaller one: coordinates that fit the finer level fit it.
     if (!coords_fit(sq, l0.fw) || !coords_fit(tq, l0.fh)) {
       quad_fallback(v, s, t, lambda[q], bias, q, rgba);
       continue;
     }
-    u16x8 lo, hi;
-    bilinear4(l0, sq, tq, lo, hi);
+    __m128i lo, hi;
+    bilinear4(l0, rep_s, rep_t, sq, tq, lo, hi);
     if (w8 > 0) {
-      u16x8 lo1, hi1;
-      bilinear4(level(d0 + 1), sq, tq, lo1, hi1);
-      const u16x8 wm = u16x8{} + static_cast<uint16_t>(w8);
-      lo = lerp_w(lo, lo1, wm);
-      hi = lerp_w(hi, hi1, wm);
+      __m128i lo1, hi1;
+      bilinear4(level(d0 + 1), rep_s, rep_t, sq, tq, lo1, hi1);
+      const __m128i wm = _mm_set1_epi16(static_cast<int16_t>(w8));
+      const __m128i iwm = _mm_set1_epi16(static_cast<int16_t>(256 - w8));
+      lo = lerp_w(lo, lo1, wm, iwm);
+      hi = lerp_w(hi, hi1, wm, iwm);
     }
     // Fragments' channels to planes: lane k of plane c is channel c of fragment k.
     const i16x8 a = reinterpret_cast<i16x8>(lo), b = reinterpret_cast<i16x8>(hi);
