@@ -425,8 +425,9 @@ void shade_block(const FragCtx& ctx, const FragInputs& in, int bx, int by, uint6
     }
     // Lanes 0, 1 are pixels p, p + 1; lanes 2, 3 the row above.
     for (int ch = 0; ch < 4; ++ch) {
-      out[ch][p] = c[ch][0], out[ch][p + 1] = c[ch][1];
-      out[ch][p + 8] = c[ch][2], out[ch][p + 9] = c[ch][3];
+      const f32x4 hi = __builtin_shufflevector(c[ch], c[ch], 2, 3, 2, 3);
+      std::memcpy(&out[ch][p], &c[ch], 2 * sizeof(float));
+      std::memcpy(&out[ch][p + 8], &hi, 2 * sizeof(float));
     }
   }
 }

@@ -11,7 +11,6 @@
 #include <cmath>
 #include <cstring>
 
-#include "fragment/simd.h"
 #include "texture/sampler.h"
 
 #if defined(__SSE2__) && defined(__x86_64__)
@@ -135,8 +134,8 @@ inline void row_texels(const uint8_t* base, __m128i o0, __m128i o1, bool pairs, 
 
 // LINEAR filtering of one level at four coordinates: fragments 0 and 1 in `lo`, 2 and 3 in
 // `hi` (four 16-bit channels each).
-inline void bilinear4(const QuadLevel& l, bool rep_s, bool rep_t, __m128 s, __m128 t, __m128i& lo,
-                      __m128i& hi) {
+[[gnu::always_inline]] inline void bilinear4(const QuadLevel& l, bool rep_s, bool rep_t, __m128 s,
+                                             __m128 t, __m128i& lo, __m128i& hi) {
   __m128i i0, i1, ws, j0, j1, wt;
   axis4(s, l.fw, l.last_s, rep_s, l.border, i0, i1, ws);
   axis4(t, l.fh, l.last_t, rep_t, l.border, j0, j1, wt);
@@ -263,19 +262,14 @@ void sample_quads(const SamplerView& v, int nq, const float* s, const float* t, 
       hi = lerp_w(hi, hi1, wm, iwm);
     }
     // Fragments' channels to planes: lane k of plane c is channel c of fragment k.
-    const i16x8 a = reinterpret_cast<i16x8>(lo), b = reinterpret_cast<i16x8>(hi);
-    const i16x8 rg = __builtin_shufflevector(a, b, 0, 4, 8, 12, 1, 5, 9, 13);
-    const i16x8 ba = __builtin_shufflevector(a, b, 2, 6, 10, 14, 3, 7, 11, 15);
-    const i16x8 z = {};
-    const auto plane = [&](i16x8 x, bool high) {
-      const i32x4 wide =
-          high ? reinterpret_cast<i32x4>(__builtin_shufflevector(x, z, 4, 8, 5, 8, 6, 8, 7, 8))
-               : reinterpret_cast<i32x4>(__builtin_shufflevector(x, z, 0, 8, 1, 8, 2, 8, 3, 8));
-      return __builtin_convertvector(wide, f32x4) * (1.0f / 255.0f);
-    };
-    const f32x4 planes[4] = {plane(rg, false), plane(rg, true), plane(ba, false), plane(ba, true)};
+    const __m128i t0 = _mm_unpacklo_epi16(lo, hi), t1 = _mm_unpackhi_epi16(lo, hi);
+    const __m128i rg = _mm_unpacklo_epi16(t0, t1), ba = _mm_unpackhi_epi16(t0, t1);
+    const __m128i zero = _mm_setzero_si128();
+    const __m128 k = _mm_set1_ps(1.0f / 255.0f);
+    const __m128i planes[4] = {_mm_unpacklo_epi16(rg, zero), _mm_unpackhi_epi16(rg, zero),
+                               _mm_unpacklo_epi16(ba, zero), _mm_unpackhi_epi16(ba, zero)};
     for (int c = 0; c < 4; ++c)
-      std::memcpy(&rgba[c][4 * q], &planes[c], sizeof(f32x4));
+      _mm_storeu_ps(&rgba[c][4 * q], _mm_mul_ps(_mm_cvtepi32_ps(planes[c]), k));
   }
 #else
   for (int q = 0; q < nq; ++q)
