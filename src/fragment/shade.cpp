@@ -425,9 +425,14 @@ void shade_block(const FragCtx& ctx, const FragInputs& in, int bx, int by, uint6
     }
     // Lanes 0, 1 are pixels p, p + 1; lanes 2, 3 the row above.
     for (int ch = 0; ch < 4; ++ch) {
+#if defined(__SSE2__)
+      _mm_storel_pi(reinterpret_cast<__m64*>(&out[ch][p]), c[ch]);
+      _mm_storeh_pi(reinterpret_cast<__m64*>(&out[ch][p + 8]), c[ch]);
+#else
       const f32x4 hi = __builtin_shufflevector(c[ch], c[ch], 2, 3, 2, 3);
       std::memcpy(&out[ch][p], &c[ch], 2 * sizeof(float));
       std::memcpy(&out[ch][p + 8], &hi, 2 * sizeof(float));
+#endif
     }
   }
 }
