@@ -53,12 +53,12 @@ struct QuadLevel {
 // llvmpipe's linear step with a weight per lane: a + floor(((b - a) w + 128) / 256), written as
 // (a (256 - w) + b w + 128) / 256 (the same value: a 256 is a multiple of 256), whose every
 // term fits an unsigned 16-bit lane for a, b, w in [0, 255]. `iw` is 256 - w.
-inline __m128i lerp_w(__m128i a, __m128i b, __m128i w, __m128i iw) {
+[[gnu::always_inline]] inline __m128i lerp_w(__m128i a, __m128i b, __m128i w, __m128i iw) {
   const __m128i sum = _mm_add_epi16(_mm_mullo_epi16(a, iw), _mm_mullo_epi16(b, w));
   return _mm_srli_epi16(_mm_add_epi16(sum, _mm_set1_epi16(128)), 8);
 }
 
-inline __m128i clamp4(__m128i v, __m128i last) {
+[[gnu::always_inline]] inline __m128i clamp4(__m128i v, __m128i last) {
   v = _mm_andnot_si128(_mm_srai_epi32(v, 31), v); // negative -> 0
   const __m128i over = _mm_cmpgt_epi32(v, last);
   return _mm_or_si128(_mm_and_si128(over, last), _mm_andnot_si128(over, v));
@@ -66,8 +66,8 @@ inline __m128i clamp4(__m128i v, __m128i last) {
 
 // The axis of four coordinates: texel indices (border offset added) and 1/256 weights, as
 // sampler.cpp's axis_linear_fixed (the conversion rounds to nearest even, as there).
-inline void axis4(__m128 s, float size_f, __m128i last, bool repeat, __m128i border, __m128i& i0,
-                  __m128i& i1, __m128i& w) {
+[[gnu::always_inline]] inline void axis4(__m128 s, float size_f, __m128i last, bool repeat,
+                                         __m128i border, __m128i& i0, __m128i& i1, __m128i& w) {
   const __m128 scaled = _mm_mul_ps(_mm_mul_ps(s, _mm_set1_ps(size_f)), _mm_set1_ps(256.0f));
   const __m128i u = _mm_sub_epi32(_mm_cvtps_epi32(scaled), _mm_set1_epi32(128));
   w = _mm_and_si128(u, _mm_set1_epi32(255));
@@ -85,21 +85,21 @@ inline void axis4(__m128 s, float size_f, __m128i last, bool repeat, __m128i bor
 }
 
 // Weights of lanes 0, 1 (lo) or 2, 3 (hi) of `w`, each repeated for a texel's four channels.
-inline __m128i spread_lo(__m128i w) {
+[[gnu::always_inline]] inline __m128i spread_lo(__m128i w) {
   const __m128i d = _mm_or_si128(w, _mm_slli_epi32(w, 16));
   return _mm_unpacklo_epi32(d, d);
 }
-inline __m128i spread_hi(__m128i w) {
+[[gnu::always_inline]] inline __m128i spread_hi(__m128i w) {
   const __m128i d = _mm_or_si128(w, _mm_slli_epi32(w, 16));
   return _mm_unpackhi_epi32(d, d);
 }
 
-inline __m128i texel(const uint8_t* base, int index) {
+[[gnu::always_inline]] inline __m128i texel(const uint8_t* base, int index) {
   int32_t x;
   std::memcpy(&x, base + static_cast<ptrdiff_t>(index) * 4, 4);
   return _mm_cvtsi32_si128(x);
 }
-inline __m128i texel_pair(const uint8_t* base, int index) {
+[[gnu::always_inline]] inline __m128i texel_pair(const uint8_t* base, int index) {
   return _mm_loadl_epi64(
       reinterpret_cast<const __m128i*>(base + static_cast<ptrdiff_t>(index) * 4));
 }
@@ -107,8 +107,9 @@ inline __m128i texel_pair(const uint8_t* base, int index) {
 // The texels at columns i0 and i1 of one row (texel offsets o0 = row + i0, o1 = row + i1) of
 // four fragments, widened: a_lo, b_lo the i0 and i1 texels of fragments 0 and 1, a_hi, b_hi of
 // fragments 2 and 3.
-inline void row_texels(const uint8_t* base, __m128i o0, __m128i o1, bool pairs, __m128i& a_lo,
-                       __m128i& b_lo, __m128i& a_hi, __m128i& b_hi) {
+[[gnu::always_inline]] inline void row_texels(const uint8_t* base, __m128i o0, __m128i o1,
+                                              bool pairs, __m128i& a_lo, __m128i& b_lo,
+                                              __m128i& a_hi, __m128i& b_hi) {
   alignas(16) int32_t off0[4], off1[4];
   _mm_store_si128(reinterpret_cast<__m128i*>(off0), o0);
   const __m128i zero = _mm_setzero_si128();
@@ -156,7 +157,7 @@ inline void row_texels(const uint8_t* base, __m128i o0, __m128i o1, bool pairs, 
 
 // Whether every lane is a coordinate the 32-bit fixed point represents as sampler.cpp's
 // 64-bit one does: |s| within the sampler's 1e6 pin and |s size 256| below 2^31; false for NaN.
-inline bool coords_fit(__m128 s, float size_f) {
+[[gnu::always_inline]] inline bool coords_fit(__m128 s, float size_f) {
   const __m128 a = _mm_and_ps(s, _mm_castsi128_ps(_mm_set1_epi32(0x7fffffff)));
   const __m128 scaled = _mm_mul_ps(_mm_mul_ps(a, _mm_set1_ps(size_f)), _mm_set1_ps(256.0f));
   const __m128 ok = _mm_and_ps(_mm_cmple_ps(a, _mm_set1_ps(1.0e6f)),
@@ -164,36 +165,12 @@ inline bool coords_fit(__m128 s, float size_f) {
   return _mm_movemask_ps(ok) == 0xf;
 }
 
-#endif
-
-} // namespace
-
-bool quad_sampling_supported(const SamplerView& v) {
-#if defined(PINEDA_QUAD_SIMD)
-  if (v.target != GL_TEXTURE_2D || v.is_depth || v.compare) return false;
-  const GLenum minf = v.min_filter;
-  const bool linear_min =
-      minf == GL_LINEAR || minf == GL_LINEAR_MIPMAP_NEAREST || minf == GL_LINEAR_MIPMAP_LINEAR;
-  if (!linear_min) return false;
-  // Level sizes halve from the base level, so a power-of-two base keeps every level one.
-  const auto wrap_ok = [](GLenum wrap, int size) {
-    return wrap == GL_CLAMP_TO_EDGE || (wrap == GL_REPEAT && is_pot(size));
-  };
-  return wrap_ok(v.wrap_s, v.width) && wrap_ok(v.wrap_t, v.height);
-#else
-  (void)v;
-  return false;
-#endif
-}
-
-void sample_quads(const SamplerView& v, int nq, const float* s, const float* t, const float* lambda,
-                  float bias, float (*rgba)[64]) {
-#if defined(PINEDA_QUAD_SIMD)
-  if (!v.quads) {
-    for (int q = 0; q < nq; ++q)
-      quad_fallback(v, s, t, lambda[q], bias, q, rgba);
-    return;
-  }
+// The vector path of sample_quads. Compiled twice: for the default target (SSE2) and, chosen at
+// run time, for AVX2, where the same instructions get the three-operand VEX forms (fewer register
+// copies); the arithmetic is the same (no FMA), so are the results.
+[[gnu::always_inline]] inline void quads_body(const SamplerView& v, int nq, const float* s,
+                                              const float* t, const float* lambda, float bias,
+                                              float (*rgba)[64]) {
   // §3.8.8 eq. 3.17: the biases' sum is clamped to MAX_TEXTURE_LOD_BIAS.
   const float total_bias = std::clamp(bias + v.lod_bias, -kMaxLodBias, kMaxLodBias);
   const GLenum minf = v.min_filter;
@@ -202,7 +179,7 @@ void sample_quads(const SamplerView& v, int nq, const float* s, const float* t, 
   const bool rep_s = v.wrap_s == GL_REPEAT, rep_t = v.wrap_t == GL_REPEAT;
   QuadLevel levels[kMaxTexLevels];
   unsigned ready = 0;
-  const auto level = [&](int l) -> const QuadLevel& {
+  const auto level = [&](int l) __attribute__((always_inline))->const QuadLevel& {
     if (!(ready & (1u << l))) {
       const SamplerLevel& sl = v.levels[0][l];
       QuadLevel& q = levels[l];
@@ -271,6 +248,58 @@ void sample_quads(const SamplerView& v, int nq, const float* s, const float* t, 
     for (int c = 0; c < 4; ++c)
       _mm_storeu_ps(&rgba[c][4 * q], _mm_mul_ps(_mm_cvtepi32_ps(planes[c]), k));
   }
+}
+
+void sample_quads_sse2(const SamplerView& v, int nq, const float* s, const float* t,
+                       const float* lambda, float bias, float (*rgba)[64]) {
+  quads_body(v, nq, s, t, lambda, bias, rgba);
+}
+
+[[gnu::target("avx2")]] void sample_quads_avx2(const SamplerView& v, int nq, const float* s,
+                                               const float* t, const float* lambda, float bias,
+                                               float (*rgba)[64]) {
+  quads_body(v, nq, s, t, lambda, bias, rgba);
+}
+
+bool avx2_supported() {
+  static const bool supported = __builtin_cpu_supports("avx2");
+  return supported;
+}
+
+#endif
+
+} // namespace
+
+bool quad_sampling_supported(const SamplerView& v) {
+#if defined(PINEDA_QUAD_SIMD)
+  if (v.target != GL_TEXTURE_2D || v.is_depth || v.compare) return false;
+  const GLenum minf = v.min_filter;
+  const bool linear_min =
+      minf == GL_LINEAR || minf == GL_LINEAR_MIPMAP_NEAREST || minf == GL_LINEAR_MIPMAP_LINEAR;
+  if (!linear_min) return false;
+  // Level sizes halve from the base level, so a power-of-two base keeps every level one.
+  const auto wrap_ok = [](GLenum wrap, int size) {
+    return wrap == GL_CLAMP_TO_EDGE || (wrap == GL_REPEAT && is_pot(size));
+  };
+  return wrap_ok(v.wrap_s, v.width) && wrap_ok(v.wrap_t, v.height);
+#else
+  (void)v;
+  return false;
+#endif
+}
+
+void sample_quads(const SamplerView& v, int nq, const float* s, const float* t, const float* lambda,
+                  float bias, float (*rgba)[64]) {
+#if defined(PINEDA_QUAD_SIMD)
+  if (!v.quads) {
+    for (int q = 0; q < nq; ++q)
+      quad_fallback(v, s, t, lambda[q], bias, q, rgba);
+    return;
+  }
+  if (avx2_supported())
+    sample_quads_avx2(v, nq, s, t, lambda, bias, rgba);
+  else
+    sample_quads_sse2(v, nq, s, t, lambda, bias, rgba);
 #else
   for (int q = 0; q < nq; ++q)
     quad_fallback(v, s, t, lambda[q], bias, q, rgba);
