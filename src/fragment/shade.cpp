@@ -213,8 +213,13 @@ float fog_factor(const ShadeSetup& ss, float c) {
   return fog_equation(ss.fog_mode, ss.fog_density, ss.fog_start, ss.fog_end, c);
 }
 
-void shade_block(const FragCtx& ctx, const FragInputs& in, int bx, int by, uint64_t mask,
-                 float (*out)[64]) {
+namespace {
+
+// shade_block's body, compiled twice like the sampler's quad path (texture/sampler_quad.cpp):
+// for the default target and, chosen at run time, for AVX2 (VEX forms of the same instructions,
+// no FMA, so the same results).
+[[gnu::always_inline]] inline void shade_body(const FragCtx& ctx, const FragInputs& in, int bx,
+                                              int by, uint64_t mask, float (*out)[64]) {
   const ShadeSetup& ss = *ctx.shade;
   const ShadeInputs& si = *in.shade;
   const float fi0 = static_cast<float>(bx - in.ox), fj0 = static_cast<float>(by - in.oy);
@@ -435,6 +440,36 @@ void shade_block(const FragCtx& ctx, const FragInputs& in, int bx, int by, uint6
 #endif
     }
   }
+}
+
+void shade_block_sse2(const FragCtx& ctx, const FragInputs& in, int bx, int by, uint64_t mask,
+                      float (*out)[64]) {
+  shade_body(ctx, in, bx, by, mask, out);
+}
+
+#if defined(__x86_64__)
+[[gnu::target("avx2")]] void shade_block_avx2(const FragCtx& ctx, const FragInputs& in, int bx,
+                                              int by, uint64_t mask, float (*out)[64]) {
+  shade_body(ctx, in, bx, by, mask, out);
+}
+
+bool has_avx2() {
+  static const bool supported = [] {
+    __builtin_cpu_init();
+    return __builtin_cpu_supports("avx2") != 0;
+  }();
+  return supported;
+}
+#endif
+
+} // namespace
+
+void shade_block(const FragCtx& ctx, const FragInputs& in, int bx, int by, uint64_t mask,
+                 float (*out)[64]) {
+#if defined(__x86_64__)
+  if (has_avx2()) return shade_block_avx2(ctx, in, bx, by, mask, out);
+#endif
+  shade_block_sse2(ctx, in, bx, by, mask, out);
 }
 
 } // namespace pineda

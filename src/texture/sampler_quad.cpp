@@ -262,7 +262,10 @@ void sample_quads_sse2(const SamplerView& v, int nq, const float* s, const float
 }
 
 bool avx2_supported() {
-  static const bool supported = __builtin_cpu_supports("avx2");
+  static const bool supported = [] {
+    __builtin_cpu_init();
+    return __builtin_cpu_supports("avx2") != 0;
+  }();
   return supported;
 }
 
