@@ -364,8 +364,8 @@ namespace {
   }
 
   // Environments in unit order (§3.8.13), colour sum (§3.9), fog (§3.10). MODULATE and
-  // REPLACE without fog run four fragments at a time; the rest one fragment at a time.
-  bool vector_env = !ss.fog;
+  // REPLACE run four fragments at a time; the other environments one fragment at a time.
+  bool vector_env = true;
   for (int k = 0; k < ss.unit_count; ++k)
     vector_env = vector_env && (ss.unit[k].mode == GL_MODULATE || ss.unit[k].mode == GL_REPLACE);
   for (int q = 0; q < nq; ++q) {
@@ -395,6 +395,18 @@ namespace {
       if (ss.color_sum)
         for (int ch = 0; ch < 3; ++ch)
           c[ch] += load4(c2[ch], q);
+      if (ss.fog) {
+        const f32x4 coord = evalv(si.fog_w, load4(fiq, q), load4(fjq, q)) * load4(w, q);
+        // GL_FOG_HINT = FASTEST: the geometry stage evaluated f per vertex and `coord` is its
+        // interpolation (§3.10 "may be computed at each vertex and interpolated").
+        f32x4 fog = clamp01v(coord);
+        if (!ss.fog_per_vertex)
+          for (int l = 0; l < 4; ++l)
+            fog[l] = (qcov[q] & (1u << l)) != 0 ? fog_factor(ss, coord[l]) : 0.0f;
+        // §3.10: C = f C_r + (1 - f) C_f on R, G and B; alpha is unchanged.
+        for (int ch = 0; ch < 3; ++ch)
+          c[ch] = fog * c[ch] + (1.0f - fog) * ss.fog_color[ch];
+      }
     } else {
       for (int l = 0; l < 4; ++l) {
         const int e = 4 * q + l;
@@ -415,7 +427,7 @@ namespace {
         if (ss.color_sum)
           for (int ch = 0; ch < 3; ++ch)
             cl[ch] += c2[ch][e];
-        if (ss.fog) {
+        if (ss.fog && (qcov[q] & (1u << l)) != 0) {
           const float coord = eval(si.fog_w, fiq[e], fjq[e]) * w[e];
           // GL_FOG_HINT = FASTEST: the geometry stage evaluated f per vertex and `coord` is
           // its interpolation (§3.10 "may be computed at each vertex and interpolated").
