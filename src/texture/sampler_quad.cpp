@@ -14,7 +14,7 @@
 #include "texture/sampler.h"
 
 #if defined(__SSE2__) && defined(__x86_64__)
-#include <emmintrin.h>
+#include <immintrin.h>
 #define PINEDA_QUAD_SIMD 1
 #endif
 
@@ -155,6 +155,106 @@ struct QuadLevel {
   hi = lerp_w(lerp_w(a0h, b0h, wsh, iwsh), lerp_w(a1h, b1h, wsh, iwsh), wth, iwth);
 }
 
+// AVX2: both levels of a trilinear sample at once, level l0 in the low 128 bits of every vector
+// and level l1 in the high ones, with bilinear4's arithmetic in each half. Returns the two
+// levels' results for fragments 0, 1 (lo) and 2, 3 (hi) in the halves.
+[[gnu::target("avx2"), gnu::always_inline]] inline __m256i both(__m128i a, __m128i b) {
+  return _mm256_inserti128_si256(_mm256_castsi128_si256(a), b, 1);
+}
+
+[[gnu::target("avx2"), gnu::always_inline]] inline void axis8(__m256 s, __m256 size_f, __m256i last,
+                                                              bool repeat, __m256i border,
+                                                              __m256i& i0, __m256i& i1,
+                                                              __m256i& w) {
+  const __m256 scaled = _mm256_mul_ps(_mm256_mul_ps(s, size_f), _mm256_set1_ps(256.0f));
+  const __m256i u = _mm256_sub_epi32(_mm256_cvtps_epi32(scaled), _mm256_set1_epi32(128));
+  w = _mm256_and_si256(u, _mm256_set1_epi32(255));
+  i0 = _mm256_srai_epi32(u, 8);
+  i1 = _mm256_add_epi32(i0, _mm256_set1_epi32(1));
+  if (repeat) {
+    i0 = _mm256_and_si256(i0, last);
+    i1 = _mm256_and_si256(i1, last);
+  } else {
+    const __m256i zero = _mm256_setzero_si256();
+    i0 = _mm256_min_epi32(_mm256_max_epi32(i0, zero), last);
+    i1 = _mm256_min_epi32(_mm256_max_epi32(i1, zero), last);
+  }
+  i0 = _mm256_add_epi32(i0, border);
+  i1 = _mm256_add_epi32(i1, border);
+}
+
+[[gnu::target("avx2"), gnu::always_inline]] inline __m256i lerp_w8(__m256i a, __m256i b, __m256i w,
+                                                                   __m256i iw) {
+  const __m256i sum = _mm256_add_epi16(_mm256_mullo_epi16(a, iw), _mm256_mullo_epi16(b, w));
+  return _mm256_srli_epi16(_mm256_add_epi16(sum, _mm256_set1_epi16(128)), 8);
+}
+
+// One row of texels of both levels (offsets o0, o1: lanes 0..3 level l0, 4..7 level l1).
+[[gnu::target("avx2"), gnu::always_inline]] inline void
+row_texels8(const uint8_t* b0, const uint8_t* b1, __m256i o0, __m256i o1, bool pairs, __m256i& a_lo,
+            __m256i& b_lo, __m256i& a_hi, __m256i& b_hi) {
+  alignas(32) int32_t off0[8], off1[8];
+  _mm256_store_si256(reinterpret_cast<__m256i*>(off0), o0);
+  __m256i x01, x23;
+  if (pairs) {
+    x01 = both(_mm_unpacklo_epi64(texel_pair(b0, off0[0]), texel_pair(b0, off0[1])),
+               _mm_unpacklo_epi64(texel_pair(b1, off0[4]), texel_pair(b1, off0[5])));
+    x23 = both(_mm_unpacklo_epi64(texel_pair(b0, off0[2]), texel_pair(b0, off0[3])),
+               _mm_unpacklo_epi64(texel_pair(b1, off0[6]), texel_pair(b1, off0[7])));
+    x01 = _mm256_shuffle_epi32(x01, _MM_SHUFFLE(3, 1, 2, 0));
+    x23 = _mm256_shuffle_epi32(x23, _MM_SHUFFLE(3, 1, 2, 0));
+  } else {
+    _mm256_store_si256(reinterpret_cast<__m256i*>(off1), o1);
+    const auto four = [](const uint8_t* b, const int32_t* p0, const int32_t* p1, int k) {
+      return _mm_unpacklo_epi64(_mm_unpacklo_epi32(texel(b, p0[k]), texel(b, p0[k + 1])),
+                                _mm_unpacklo_epi32(texel(b, p1[k]), texel(b, p1[k + 1])));
+    };
+    x01 = both(four(b0, off0, off1, 0), four(b1, off0, off1, 4));
+    x23 = both(four(b0, off0, off1, 2), four(b1, off0, off1, 6));
+  }
+  const __m256i zero = _mm256_setzero_si256();
+  a_lo = _mm256_unpacklo_epi8(x01, zero);
+  b_lo = _mm256_unpackhi_epi8(x01, zero);
+  a_hi = _mm256_unpacklo_epi8(x23, zero);
+  b_hi = _mm256_unpackhi_epi8(x23, zero);
+}
+
+[[gnu::target("avx2")]] void trilinear8(const QuadLevel& l0, const QuadLevel& l1, bool rep_s,
+                                        bool rep_t, __m128 s, __m128 t, int w8, __m128i& lo_out,
+                                        __m128i& hi_out) {
+  const __m256 s8 = _mm256_insertf128_ps(_mm256_castps128_ps256(s), s, 1);
+  const __m256 t8 = _mm256_insertf128_ps(_mm256_castps128_ps256(t), t, 1);
+  const __m256 fw = _mm256_insertf128_ps(_mm256_set1_ps(l0.fw), _mm_set1_ps(l1.fw), 1);
+  const __m256 fh = _mm256_insertf128_ps(_mm256_set1_ps(l0.fh), _mm_set1_ps(l1.fh), 1);
+  const __m256i border = both(l0.border, l1.border);
+  __m256i i0, i1, ws, j0, j1, wt;
+  axis8(s8, fw, both(l0.last_s, l1.last_s), rep_s, border, i0, i1, ws);
+  axis8(t8, fh, both(l0.last_t, l1.last_t), rep_t, border, j0, j1, wt);
+  const __m256i row = both(l0.row, l1.row);
+  const __m256i r0 = _mm256_madd_epi16(j0, row), r1 = _mm256_madd_epi16(j1, row);
+  const bool pairs = _mm256_movemask_epi8(
+                         _mm256_cmpeq_epi32(i1, _mm256_add_epi32(i0, _mm256_set1_epi32(1)))) == -1;
+  __m256i a0l, b0l, a0h, b0h, a1l, b1l, a1h, b1h;
+  row_texels8(l0.rgba, l1.rgba, _mm256_add_epi32(r0, i0), _mm256_add_epi32(r0, i1), pairs, a0l, b0l,
+              a0h, b0h);
+  row_texels8(l0.rgba, l1.rgba, _mm256_add_epi32(r1, i0), _mm256_add_epi32(r1, i1), pairs, a1l, b1l,
+              a1h, b1h);
+  const __m256i k256 = _mm256_set1_epi16(256);
+  const __m256i ds = _mm256_or_si256(ws, _mm256_slli_epi32(ws, 16));
+  const __m256i dt = _mm256_or_si256(wt, _mm256_slli_epi32(wt, 16));
+  const __m256i wsl = _mm256_unpacklo_epi32(ds, ds), wsh = _mm256_unpackhi_epi32(ds, ds);
+  const __m256i wtl = _mm256_unpacklo_epi32(dt, dt), wth = _mm256_unpackhi_epi32(dt, dt);
+  const __m256i iwsl = _mm256_sub_epi16(k256, wsl), iwsh = _mm256_sub_epi16(k256, wsh);
+  const __m256i iwtl = _mm256_sub_epi16(k256, wtl), iwth = _mm256_sub_epi16(k256, wth);
+  const __m256i lo = lerp_w8(lerp_w8(a0l, b0l, wsl, iwsl), lerp_w8(a1l, b1l, wsl, iwsl), wtl, iwtl);
+  const __m256i hi = lerp_w8(lerp_w8(a0h, b0h, wsh, iwsh), lerp_w8(a1h, b1h, wsh, iwsh), wth, iwth);
+  // The mipmap step between the halves (§3.8.10 LINEAR_MIPMAP_LINEAR).
+  const __m128i wm = _mm_set1_epi16(static_cast<int16_t>(w8));
+  const __m128i iwm = _mm_set1_epi16(static_cast<int16_t>(256 - w8));
+  lo_out = lerp_w(_mm256_castsi256_si128(lo), _mm256_extracti128_si256(lo, 1), wm, iwm);
+  hi_out = lerp_w(_mm256_castsi256_si128(hi), _mm256_extracti128_si256(hi, 1), wm, iwm);
+}
+
 // Whether every lane is a coordinate the 32-bit fixed point represents as sampler.cpp's
 // 64-bit one does: |s| within the sampler's 1e6 pin and |s size 256| below 2^31; false for NaN.
 [[gnu::always_inline]] inline bool coords_fit(__m128 s, float size_f) {
@@ -168,6 +268,19 @@ struct QuadLevel {
 // The vector path of sample_quads. Compiled twice: for the default target (SSE2) and, chosen at
 // run time, for AVX2, where the same instructions get the three-operand VEX forms (fewer register
 // copies); the arithmetic is the same (no FMA), so are the results.
+// Fragments' channels to planes: lane k of plane c is channel c of fragment k of quad q.
+[[gnu::always_inline]] inline void store_planes(__m128i lo, __m128i hi, int q, float (*rgba)[64]) {
+  const __m128i t0 = _mm_unpacklo_epi16(lo, hi), t1 = _mm_unpackhi_epi16(lo, hi);
+  const __m128i rg = _mm_unpacklo_epi16(t0, t1), ba = _mm_unpackhi_epi16(t0, t1);
+  const __m128i zero = _mm_setzero_si128();
+  const __m128 k = _mm_set1_ps(1.0f / 255.0f);
+  const __m128i planes[4] = {_mm_unpacklo_epi16(rg, zero), _mm_unpackhi_epi16(rg, zero),
+                             _mm_unpacklo_epi16(ba, zero), _mm_unpackhi_epi16(ba, zero)};
+  for (int c = 0; c < 4; ++c)
+    _mm_storeu_ps(&rgba[c][4 * q], _mm_mul_ps(_mm_cvtepi32_ps(planes[c]), k));
+}
+
+template <bool kAvx2>
 [[gnu::always_inline]] inline void quads_body(const SamplerView& v, int nq, const float* s,
                                               const float* t, const float* lambda, float bias,
                                               float (*rgba)[64]) {
@@ -229,6 +342,13 @@ struct QuadLevel {
       continue;
     }
     __m128i lo, hi;
+    if constexpr (kAvx2) {
+      if (w8 > 0) {
+        trilinear8(l0, level(d0 + 1), rep_s, rep_t, sq, tq, w8, lo, hi);
+        store_planes(lo, hi, q, rgba);
+        continue;
+      }
+    }
     bilinear4(l0, rep_s, rep_t, sq, tq, lo, hi);
     if (w8 > 0) {
       __m128i lo1, hi1;
@@ -238,27 +358,19 @@ struct QuadLevel {
       lo = lerp_w(lo, lo1, wm, iwm);
       hi = lerp_w(hi, hi1, wm, iwm);
     }
-    // Fragments' channels to planes: lane k of plane c is channel c of fragment k.
-    const __m128i t0 = _mm_unpacklo_epi16(lo, hi), t1 = _mm_unpackhi_epi16(lo, hi);
-    const __m128i rg = _mm_unpacklo_epi16(t0, t1), ba = _mm_unpackhi_epi16(t0, t1);
-    const __m128i zero = _mm_setzero_si128();
-    const __m128 k = _mm_set1_ps(1.0f / 255.0f);
-    const __m128i planes[4] = {_mm_unpacklo_epi16(rg, zero), _mm_unpackhi_epi16(rg, zero),
-                               _mm_unpacklo_epi16(ba, zero), _mm_unpackhi_epi16(ba, zero)};
-    for (int c = 0; c < 4; ++c)
-      _mm_storeu_ps(&rgba[c][4 * q], _mm_mul_ps(_mm_cvtepi32_ps(planes[c]), k));
+    store_planes(lo, hi, q, rgba);
   }
 }
 
 void sample_quads_sse2(const SamplerView& v, int nq, const float* s, const float* t,
                        const float* lambda, float bias, float (*rgba)[64]) {
-  quads_body(v, nq, s, t, lambda, bias, rgba);
+  quads_body<false>(v, nq, s, t, lambda, bias, rgba);
 }
 
 [[gnu::target("avx2")]] void sample_quads_avx2(const SamplerView& v, int nq, const float* s,
                                                const float* t, const float* lambda, float bias,
                                                float (*rgba)[64]) {
-  quads_body(v, nq, s, t, lambda, bias, rgba);
+  quads_body<true>(v, nq, s, t, lambda, bias, rgba);
 }
 
 bool avx2_supported() {
