@@ -17,6 +17,7 @@
 
 #include "fragment/fog_equation.h"
 #include "fragment/simd.h"
+#include "texture/cpu_dispatch.h"
 
 namespace pineda {
 
@@ -465,13 +466,6 @@ void shade_block_sse2(const FragCtx& ctx, const FragInputs& in, int bx, int by, 
   shade_body(ctx, in, bx, by, mask, out);
 }
 
-bool has_avx2() {
-  static const bool supported = [] {
-    __builtin_cpu_init();
-    return __builtin_cpu_supports("avx2") != 0;
-  }();
-  return supported;
-}
 #endif
 
 } // namespace
@@ -479,7 +473,7 @@ bool has_avx2() {
 void shade_block(const FragCtx& ctx, const FragInputs& in, int bx, int by, uint64_t mask,
                  float (*out)[64]) {
 #if defined(__x86_64__)
-  if (has_avx2()) return shade_block_avx2(ctx, in, bx, by, mask, out);
+  if (use_avx2()) return shade_block_avx2(ctx, in, bx, by, mask, out);
 #endif
   shade_block_sse2(ctx, in, bx, by, mask, out);
 }

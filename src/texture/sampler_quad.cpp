@@ -11,6 +11,7 @@
 #include <cmath>
 #include <cstring>
 
+#include "texture/cpu_dispatch.h"
 #include "texture/sampler.h"
 
 #if defined(__SSE2__) && defined(__x86_64__)
@@ -373,14 +374,6 @@ void sample_quads_sse2(const SamplerView& v, int nq, const float* s, const float
   quads_body<true>(v, nq, s, t, lambda, bias, rgba);
 }
 
-bool avx2_supported() {
-  static const bool supported = [] {
-    __builtin_cpu_init();
-    return __builtin_cpu_supports("avx2") != 0;
-  }();
-  return supported;
-}
-
 #endif
 
 } // namespace
@@ -411,7 +404,7 @@ void sample_quads(const SamplerView& v, int nq, const float* s, const float* t, 
       quad_fallback(v, s, t, lambda[q], bias, q, rgba);
     return;
   }
-  if (avx2_supported())
+  if (use_avx2())
     sample_quads_avx2(v, nq, s, t, lambda, bias, rgba);
   else
     sample_quads_sse2(v, nq, s, t, lambda, bias, rgba);
