@@ -7,6 +7,9 @@
 // (GL 2.1 §3.8.8 allows rho to be approximated; llvmpipe computes it per quad), the level
 // selection is done once per quad. Whatever this path does not cover (NEAREST filters,
 // coordinates too large for 32-bit fixed point, NaN) goes through sample_texture.
+//
+// The vector path is SSE2; where the CPU has AVX2 (texture/cpu_dispatch.h) a second copy runs,
+// which filters the two levels of a LINEAR_MIPMAP_LINEAR sample side by side in 256-bit vectors.
 #include <algorithm>
 #include <cmath>
 #include <cstring>
