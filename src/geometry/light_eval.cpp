@@ -40,7 +40,7 @@ struct LightTerms {
 
 // (n . h)^srm for a clamped n . h, with 0^0 = 1 as pow gives.
 inline float spec_power(float n_dot_h, float shininess) {
-  return std::pow(n_dot_h > 0.0f ? n_dot_h : 0.0f, shininess);
+  return lit_pow(n_dot_h > 0.0f ? n_dot_h : 0.0f, shininess);
 }
 
 // c_pri and c_sec of one face: `sign` is +1 for the front (n) and -1 for the back (-n).
@@ -238,7 +238,7 @@ void light_vertex_faces(const LightSetup& s, const LitFaces& faces, const float 
       if (l.attenuated) scale = 1.0f / (l.k[0] + l.k[1] * d + l.k[2] * d2);
       if (l.spot) {
         const float sd = -dot3(vp, l.spot_direction);
-        scale *= sd >= l.spot_cos ? std::pow(sd, l.spot_exponent) : 0.0f;
+        scale *= sd >= l.spot_cos ? lit_pow(sd, l.spot_exponent) : 0.0f;
       }
     } else {
       for (int c = 0; c < 3; ++c)

@@ -2,11 +2,34 @@
 // state, then the lighting equation for each vertex in eye coordinates.
 #pragma once
 
+#include <cmath>
+
 #include <glm/mat4x4.hpp>
 
 #include "state/lighting_state.h"
 
 namespace pineda {
+
+// x^y for the lighting equation's powers (the specular exponent, eq. 2.1, and the spot
+// exponent, eq. 2.5), x >= 0 or NaN. An integer exponent up to 128 (the usual case) is
+// computed by repeated squaring, a few multiplications instead of a library pow; each
+// squaring doubles the relative error, so the result is within about y units in the last
+// place (below 1e-5 relative, far below the 8-bit colour step). vertex_simd_impl.h does the
+// same multiplications in its lanes, so every vertex gets the same colour whichever path
+// lights it.
+inline bool lit_pow_by_squaring(float y) {
+  return y >= 0.0f && y <= 128.0f && static_cast<float>(static_cast<int>(y)) == y;
+}
+inline float lit_pow(float x, float y) {
+  if (!lit_pow_by_squaring(y)) return std::pow(x, y);
+  float r = 1.0f, b = x;
+  for (auto n = static_cast<unsigned>(y); n != 0;) {
+    if ((n & 1u) != 0) r *= b;
+    n >>= 1;
+    if (n != 0) b *= b;
+  }
+  return r;
+}
 
 // Fill `s` from the lighting state and the current model-view matrix. Called by validation
 // whenever lighting state, the normalize / rescale enables or the model-view changed.

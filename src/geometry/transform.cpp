@@ -120,8 +120,8 @@ template <bool kLit, bool kExtra>
   }
 }
 
-// Vertices per pass of the four-lane functions (vertex_simd.h): the pass's vertices stay in
-// the cache between transform, lighting and finish_vertex.
+// Vertices per pass of the vector functions (vertex_simd.h): the pass's vertices stay in the
+// cache between transform, lighting and finish_vertex.
 constexpr size_t kVertexChunk = 128;
 
 // The per-vertex loop, instantiated for lighting on or off and for whether any of texture
@@ -139,8 +139,8 @@ template <bool kLit, bool kExtra> void transform_vertices(const VertexJob& job) 
     tracking = ls.track[0] || ls.track[1];
     if (!tracking) prepare_lit_faces(ls, material, nullptr, faces);
   }
-  // One material for the whole draw: four vertices at a time. A single primitive of
-  // immediate mode (a few vertices) stays on the plain loop.
+  // One material for the whole draw: several vertices at a time (vertex_simd.h). A single
+  // primitive of immediate mode (a few vertices) stays on the plain loop.
   if (job.n >= 8 && (!kLit || (!tracking && job.change_count == 0))) {
     for (size_t i0 = 0; i0 < job.n; i0 += kVertexChunk) {
       const size_t count = std::min(kVertexChunk, job.n - i0);

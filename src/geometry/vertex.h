@@ -9,13 +9,13 @@ namespace pineda {
 // Attribute slots in PVertex::attr. The layout is fixed; RasterState::attr_count says how many
 // leading floats are live (clipped and interpolated), so a scene that reads only colour pays
 // for four floats.
-constexpr int kAttrColor = 0;       // primary colour RGBA, clamped to [0,1]
-constexpr int kAttrColor2 = 4;      // secondary colour RGB(A) (GL 1.4 colour sum)
-constexpr int kAttrTex0 = 8;        // texture unit u at kAttrTex0 + 4*u, (s,t,r,q)
+constexpr int kAttrColor = 0;  // primary colour RGBA, clamped to [0,1]
+constexpr int kAttrColor2 = 4; // secondary colour RGB(A) (GL 1.4 colour sum)
+constexpr int kAttrTex0 = 8;   // texture unit u at kAttrTex0 + 4*u, (s,t,r,q)
 constexpr int kMaxTexUnits = 4;
-constexpr int kAttrFog = kAttrTex0 + 4 * kMaxTexUnits;  // 24: fog coordinate / factor
-constexpr int kAttrBackColor = 28;  // two-sided lighting: back primary colour
-constexpr int kAttrBackColor2 = 32; // two-sided lighting: back secondary colour
+constexpr int kAttrFog = kAttrTex0 + 4 * kMaxTexUnits; // 24: fog coordinate / factor
+constexpr int kAttrBackColor = 28;                     // two-sided lighting: back primary colour
+constexpr int kAttrBackColor2 = 32;                    // two-sided lighting: back secondary colour
 constexpr int kMaxAttr = 36;
 
 // Clip code bits (GL 2.1 §2.12). A bit is set when the vertex is outside that half-space.

@@ -139,9 +139,19 @@ template <int N> struct Simd {
     return v > 0.0f ? (v < 1.0f ? v : splat(1.0f)) : splat(0.0f);
   }
 
-  // powf(x, y) lane by lane where `mask` is set, 0 elsewhere: pow has no vector form that
-  // matches the scalar library's results.
+  // lit_pow (light_eval.h) where `mask` is set, 0 elsewhere: the same multiplications in
+  // every lane for an integer exponent, else powf lane by lane.
   static V pow_lanes(M mask, V x, float y) {
+    // lit_pow_by_squaring, repeated here: no inline function of another header (see above).
+    if (y >= 0.0f && y <= 128.0f && static_cast<float>(static_cast<int>(y)) == y) {
+      V r = splat(1.0f), b = x;
+      for (auto n = static_cast<unsigned>(y); n != 0;) {
+        if ((n & 1u) != 0) r *= b;
+        n >>= 1;
+        if (n != 0) b *= b;
+      }
+      return mask ? r : splat(0.0f);
+    }
     V r = {};
     for (int k = 0; k < N; ++k)
       if (mask[k] != 0) r[k] = __builtin_powf(x[k], y);
