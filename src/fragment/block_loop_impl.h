@@ -719,12 +719,10 @@ void block_loop(const FragCtx& ctx, const FragInputs& in, int bx, int by, uint64
   if constexpr (S == ShadePath::Const)
     const_row = row_splat(
         pack_pixel<P>(in.const_color[0], in.const_color[1], in.const_color[2], in.const_color[3]));
-  // Texturing and fog: the whole block's colours first (fragment/shade.cpp).
+  // Texturing and fog: the whole block's colours first (fragment/shade.cpp), which writes every
+  // row that holds a fragment of `mask`, the only rows read below.
   [[maybe_unused]] alignas(32) float shaded_block[4][64];
-  if constexpr (S == ShadePath::PerFragment) {
-    std::memset(shaded_block, 0, sizeof(shaded_block));
-    shade_block(ctx, in, bx, by, mask, shaded_block);
-  }
+  if constexpr (S == ShadePath::PerFragment) shade_block(ctx, in, bx, by, mask, shaded_block);
   // One row: the tests, then colour and store for the survivors of `m`. `in_buffer`: the whole
   // row lies inside the buffer (bx + 8 <= width).
   const auto run_row = [&](int j, unsigned m, bool in_buffer) __attribute__((always_inline)) {

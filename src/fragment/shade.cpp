@@ -5,14 +5,19 @@
 // Level of detail follows llvmpipe: one lambda per 2x2 quad (quads aligned to even pixel
 // positions), from the differences of the coordinates along the quad's upper row (d/dx) and
 // left column (d/dy), with rho the longer of the two scaled derivative vectors (§3.8.8).
+// The work runs quad by quad, four fragments in a vector, with the same arithmetic lane by
+// lane as one fragment at a time.
 #include "fragment/shade.h"
 
 #include <algorithm>
 #include <bit>
 #include <cmath>
 #include <cstdint>
+#include <cstring>
 
 #include "fragment/fog_equation.h"
+#include "fragment/simd.h"
+#include "texture/cpu_dispatch.h"
 
 namespace pineda {
 
@@ -24,6 +29,25 @@ inline float clamp01(float v) {
 
 inline float eval(const PlaneF& p, float fi, float fj) {
   return p.v0 + fi * p.dx + fj * p.dy;
+}
+
+// eval and clamp01 on the four fragments of a quad (the same operations lane by lane).
+inline f32x4 evalv(const PlaneF& p, f32x4 fi, f32x4 fj) {
+  return p.v0 + fi * p.dx + fj * p.dy;
+}
+inline f32x4 clamp01v(f32x4 v) {
+  const f32x4 zero = {}, one = zero + 1.0f;
+  return v > zero ? vmin(v, one) : zero;
+}
+
+// Quad q's four entries of a quad-ordered array.
+inline f32x4 load4(const float* a, int q) {
+  f32x4 v;
+  std::memcpy(&v, a + 4 * q, sizeof(v));
+  return v;
+}
+inline void store4(float* a, int q, f32x4 v) {
+  std::memcpy(a + 4 * q, &v, sizeof(v));
 }
 
 // log2 as llvmpipe's level-of-detail computation takes it: exact at powers of two and linear
@@ -190,161 +214,268 @@ float fog_factor(const ShadeSetup& ss, float c) {
   return fog_equation(ss.fog_mode, ss.fog_density, ss.fog_start, ss.fog_end, c);
 }
 
-void shade_block(const FragCtx& ctx, const FragInputs& in, int bx, int by, uint64_t mask,
-                 float (*out)[64]) {
+namespace {
+
+// shade_block's body, compiled twice like the sampler's quad path (texture/sampler_quad.cpp):
+// for the default target and, chosen at run time, for AVX2 (VEX forms of the same instructions,
+// no FMA, so the same results).
+[[gnu::always_inline]] inline void shade_body(const FragCtx& ctx, const FragInputs& in, int bx,
+                                              int by, uint64_t mask, float (*out)[64]) {
   const ShadeSetup& ss = *ctx.shade;
   const ShadeInputs& si = *in.shade;
   const float fi0 = static_cast<float>(bx - in.ox), fj0 = static_cast<float>(by - in.oy);
 
-  int idx[64];
-  int n = 0;
-  for (uint64_t m = mask; m != 0; m &= m - 1)
-    idx[n++] = std::countr_zero(m);
-  // Row pairs (quad rows) holding a fragment: their every pixel feeds the derivatives.
-  unsigned pairs = 0;
-  for (int k = 0; k < 4; ++k)
-    if ((mask >> (16 * k)) & 0xffffu) pairs |= 1u << k;
-
-  // w at every pixel of those rows: 1 / (1/w) (§3.5.1 eq 3.9).
-  alignas(16) float w[64];
-  for (int k = 0; k < 4; ++k) {
-    if (!(pairs & (1u << k))) continue;
-    for (int p = 16 * k; p < 16 * k + 16; ++p)
-      w[p] =
-          1.0f / eval(si.inv_w, fi0 + static_cast<float>(p & 7), fj0 + static_cast<float>(p >> 3));
+  // The 2x2 quads holding a fragment. Everything below is kept in quad order: entry 4q + k is
+  // lane k of quad q, the pixel (k & 1, k >> 1) of the quad. Every pixel of such a quad feeds
+  // the derivatives; quads without a fragment in a row pair with one are written as zeros
+  // (the block loop reads whole rows).
+  int qpix[16];      // block pixel index of lane 0
+  unsigned qcov[16]; // fragments of the quad: bit k for lane k
+  int nq = 0;
+  for (int qy = 0; qy < 4; ++qy) {
+    const unsigned pair = static_cast<unsigned>(mask >> (16 * qy)) & 0xffffu;
+    if (pair == 0) continue;
+    for (int qx = 0; qx < 4; ++qx) {
+      const unsigned m = (pair >> (2 * qx)) & 0x303u;
+      const int p = 16 * qy + 2 * qx;
+      if (m == 0) {
+        for (int c = 0; c < 4; ++c)
+          out[c][p] = out[c][p + 1] = out[c][p + 8] = out[c][p + 9] = 0.0f;
+        continue;
+      }
+      qpix[nq] = p;
+      qcov[nq] = (m & 3u) | ((m >> 6) & 0xcu);
+      ++nq;
+    }
   }
 
-  // Primary (and secondary) colour of each fragment.
-  float cf[64][4];
-  float c2[64][3];
-  for (int f = 0; f < n; ++f) {
-    const int p = idx[f];
+  // Window offsets, w (1 / (1/w), §3.5.1 eq 3.9) and the primary (and secondary) colours.
+  const i32x4 lane_x = {0, 1, 0, 1}, lane_y = {0, 0, 1, 1};
+  alignas(16) float fiq[64], fjq[64], w[64];
+  alignas(16) float cf[4][64], c2[3][64];
+  for (int q = 0; q < nq; ++q) {
+    const int p = qpix[q];
+    const f32x4 fi = fi0 + __builtin_convertvector((p & 7) + lane_x, f32x4);
+    const f32x4 fj = fj0 + __builtin_convertvector((p >> 3) + lane_y, f32x4);
+    const f32x4 wv = 1.0f / evalv(si.inv_w, fi, fj);
+    store4(fiq, q, fi);
+    store4(fjq, q, fj);
+    store4(w, q, wv);
     if (si.const_colors) {
       for (int c = 0; c < 4; ++c)
-        cf[f][c] = si.color[c];
+        store4(cf[c], q, f32x4{} + si.color[c]);
       if (ss.color_sum)
         for (int c = 0; c < 3; ++c)
-          c2[f][c] = si.color2[c];
+          store4(c2[c], q, f32x4{} + si.color2[c]);
       continue;
     }
-    const float fi = fi0 + static_cast<float>(p & 7), fj = fj0 + static_cast<float>(p >> 3);
     for (int c = 0; c < 4; ++c)
-      cf[f][c] = clamp01(eval(si.color_w[c], fi, fj) * w[p]);
+      store4(cf[c], q, clamp01v(evalv(si.color_w[c], fi, fj) * wv));
     if (ss.color_sum)
       for (int c = 0; c < 3; ++c)
-        c2[f][c] = clamp01(eval(si.color2_w[c], fi, fj) * w[p]);
+        store4(c2[c], q, clamp01v(evalv(si.color2_w[c], fi, fj) * wv));
   }
 
-  // Texture lookups of every enabled unit.
-  float tex[kMaxTexUnits][64][4];
+  // Texture lookups of every enabled unit, in planes: tex[unit][channel][4q + k].
+  alignas(16) float tex[kMaxTexUnits][4][64];
   for (int k = 0; k < ss.unit_count; ++k) {
     const ShadeUnit& su = ss.unit[k];
     const PlaneF* tp = si.tex_w[su.index];
     const bool cube = su.dims == LodDims::Cube;
+    // The vector sampler reads s and t only; r also serves depth comparison (§3.8.14).
+    const bool need_r = !su.view.quads;
     alignas(16) float s[64], t[64], r[64];
-    for (int q = 0; q < 4; ++q) {
-      if (!(pairs & (1u << q))) continue;
-      for (int p = 16 * q; p < 16 * q + 16; ++p) {
-        const float fi = fi0 + static_cast<float>(p & 7), fj = fj0 + static_cast<float>(p >> 3);
-        const float ss_ = eval(tp[0], fi, fj) * w[p];
-        const float tt = eval(tp[1], fi, fj) * w[p];
-        const float rr = eval(tp[2], fi, fj) * w[p];
-        if (cube) {
-          // §3.8.6: cube map coordinates are a direction; q does not matter.
-          s[p] = ss_, t[p] = tt, r[p] = rr;
-        } else {
-          // §3.8.8: the coordinates are divided by q.
-          const float inv_q = 1.0f / (eval(tp[3], fi, fj) * w[p]);
-          s[p] = ss_ * inv_q, t[p] = tt * inv_q, r[p] = rr * inv_q;
-        }
+    for (int q = 0; q < nq; ++q) {
+      const f32x4 fi = load4(fiq, q), fj = load4(fjq, q), wv = load4(w, q);
+      const f32x4 ss_ = evalv(tp[0], fi, fj) * wv;
+      const f32x4 tt = evalv(tp[1], fi, fj) * wv;
+      if (cube) {
+        // §3.8.6: cube map coordinates are a direction; q does not matter.
+        store4(s, q, ss_), store4(t, q, tt), store4(r, q, evalv(tp[2], fi, fj) * wv);
+      } else {
+        // §3.8.8: the coordinates are divided by q.
+        const f32x4 inv_q = 1.0f / (evalv(tp[3], fi, fj) * wv);
+        store4(s, q, ss_ * inv_q), store4(t, q, tt * inv_q);
+        if (need_r) store4(r, q, (evalv(tp[2], fi, fj) * wv) * inv_q);
       }
     }
-    // lambda per quad.
-    alignas(16) float lam_px[64];
+    // lambda per quad, from lanes 0 (lower left), 2 (upper left) and 3 (upper right).
+    alignas(16) float lam[16];
     const float width = static_cast<float>(su.view.width);
     const float height = static_cast<float>(su.view.height);
     const float depth = static_cast<float>(su.view.depth);
-    for (int q = 0; q < 4; ++q) {
-      if (!(pairs & (1u << q))) continue;
-      for (int m = 0; m < 4; ++m) {
-        const int ll = 16 * q + 2 * m, ul = ll + 8, ur = ul + 1;
-        // Scaled derivatives (u, v, w) along x and y (§3.8.8 eq 3.18).
-        float dx[3] = {0, 0, 0}, dy[3] = {0, 0, 0};
-        if (cube) {
-          // Derivatives of the face coordinates of the quad's upper-left major axis.
-          const float ax = std::fabs(s[ul]), ay = std::fabs(t[ul]), az = std::fabs(r[ul]);
-          const int major = (ax >= ay && ax >= az) ? 0 : (ay >= az ? 1 : 2);
-          const auto face = [&](int p, float& u, float& v) {
-            const float d[3] = {s[p], t[p], r[p]};
-            const float ma = std::fabs(d[major]);
-            const float inv = ma > 0.0f ? 0.5f / ma : 0.0f;
-            u = d[major == 0 ? 2 : 0] * inv;
-            v = d[major == 1 ? 2 : 1] * inv;
-          };
-          float u0, v0, u1, v1, u2, v2;
-          face(ul, u0, v0);
-          face(ur, u1, v1);
-          face(ll, u2, v2);
-          dx[0] = (u1 - u0) * width, dx[1] = (v1 - v0) * width;
-          dy[0] = (u0 - u2) * width, dy[1] = (v0 - v2) * width;
-        } else {
-          dx[0] = (s[ur] - s[ul]) * width, dy[0] = (s[ul] - s[ll]) * width;
-          if (su.dims != LodDims::One)
-            dx[1] = (t[ur] - t[ul]) * height, dy[1] = (t[ul] - t[ll]) * height;
-          if (su.dims == LodDims::Three)
-            dx[2] = (r[ur] - r[ul]) * depth, dy[2] = (r[ul] - r[ll]) * depth;
-        }
-        // §3.8.8 eq 3.19: rho = max of the two derivative vectors' lengths; lambda = log2(rho),
-        // taken as half the log of the squared length.
-        const float rho2 = std::max(dx[0] * dx[0] + dx[1] * dx[1] + dx[2] * dx[2],
-                                    dy[0] * dy[0] + dy[1] * dy[1] + dy[2] * dy[2]);
-        // log2(0) is -infinity: plain magnification; keep it finite for the sampler.
-        const float lam = rho2 > 0.0f ? std::max(0.5f * fast_log2(rho2), -64.0f) : -64.0f;
-        lam_px[ll] = lam_px[ll + 1] = lam_px[ul] = lam_px[ur] = lam;
+    for (int q = 0; q < nq; ++q) {
+      const int ll = 4 * q, ul = ll + 2, ur = ll + 3;
+      // Scaled derivatives (u, v, w) along x and y (§3.8.8 eq 3.18).
+      float dx[3] = {0, 0, 0}, dy[3] = {0, 0, 0};
+      if (cube) {
+        // Derivatives of the face coordinates of the quad's upper-left major axis.
+        const float ax = std::fabs(s[ul]), ay = std::fabs(t[ul]), az = std::fabs(r[ul]);
+        const int major = (ax >= ay && ax >= az) ? 0 : (ay >= az ? 1 : 2);
+        const auto face = [&](int p, float& u, float& v) {
+          const float d[3] = {s[p], t[p], r[p]};
+          const float ma = std::fabs(d[major]);
+          const float inv = ma > 0.0f ? 0.5f / ma : 0.0f;
+          u = d[major == 0 ? 2 : 0] * inv;
+          v = d[major == 1 ? 2 : 1] * inv;
+        };
+        float u0, v0, u1, v1, u2, v2;
+        face(ul, u0, v0);
+        face(ur, u1, v1);
+        face(ll, u2, v2);
+        dx[0] = (u1 - u0) * width, dx[1] = (v1 - v0) * width;
+        dy[0] = (u0 - u2) * width, dy[1] = (v0 - v2) * width;
+      } else {
+        dx[0] = (s[ur] - s[ul]) * width, dy[0] = (s[ul] - s[ll]) * width;
+        if (su.dims != LodDims::One)
+          dx[1] = (t[ur] - t[ul]) * height, dy[1] = (t[ul] - t[ll]) * height;
+        if (su.dims == LodDims::Three)
+          dx[2] = (r[ur] - r[ul]) * depth, dy[2] = (r[ul] - r[ll]) * depth;
       }
+      // §3.8.8 eq 3.19: rho = max of the two derivative vectors' lengths; lambda = log2(rho),
+      // taken as half the log of the squared length.
+      const float rho2 = std::max(dx[0] * dx[0] + dx[1] * dx[1] + dx[2] * dx[2],
+                                  dy[0] * dy[0] + dy[1] * dy[1] + dy[2] * dy[2]);
+      // log2(0) is -infinity: plain magnification; keep it finite for the sampler.
+      lam[q] = rho2 > 0.0f ? std::max(0.5f * fast_log2(rho2), -64.0f) : -64.0f;
     }
+    if (su.view.quads) {
+      sample_quads(su.view, nq, s, t, lam, su.bias, tex[k]);
+      continue;
+    }
+    // The general sampler on the fragments only; the quads' other lanes read as zeros.
     alignas(16) float gs[64], gt[64], gr[64], gl[64];
-    for (int f = 0; f < n; ++f) {
-      const int p = idx[f];
-      gs[f] = s[p], gt[f] = t[p], gr[f] = r[p], gl[f] = lam_px[p];
-    }
-    sample_texture(su.view, n, gs, gt, gr, gl, su.bias, tex[k]);
+    int n = 0;
+    for (int q = 0; q < nq; ++q)
+      for (int l = 0; l < 4; ++l)
+        if (qcov[q] & (1u << l)) {
+          gs[n] = s[4 * q + l], gt[n] = t[4 * q + l], gr[n] = r[4 * q + l], gl[n] = lam[q];
+          ++n;
+        }
+    float sampled[64][4];
+    sample_texture(su.view, n, gs, gt, gr, gl, su.bias, sampled);
+    n = 0;
+    for (int q = 0; q < nq; ++q)
+      for (int l = 0; l < 4; ++l) {
+        const bool covered = (qcov[q] & (1u << l)) != 0;
+        for (int c = 0; c < 4; ++c)
+          tex[k][c][4 * q + l] = covered ? sampled[n][c] : 0.0f;
+        n += covered ? 1 : 0;
+      }
   }
 
-  // Environments in unit order (§3.8.13), colour sum (§3.9), fog (§3.10).
-  for (int f = 0; f < n; ++f) {
-    const int p = idx[f];
-    float c[4] = {cf[f][0], cf[f][1], cf[f][2], cf[f][3]};
-    if (ss.unit_count != 0) {
-      float tf[kMaxTexUnits][4];
-      for (int k = 0; k < ss.unit_count; ++k)
-        for (int ch = 0; ch < 4; ++ch)
-          tf[k][ch] = tex[k][f][ch];
+  // Environments in unit order (§3.8.13), colour sum (§3.9), fog (§3.10). MODULATE and
+  // REPLACE run four fragments at a time; the other environments one fragment at a time.
+  bool vector_env = true;
+  for (int k = 0; k < ss.unit_count; ++k)
+    vector_env = vector_env && (ss.unit[k].mode == GL_MODULATE || ss.unit[k].mode == GL_REPLACE);
+  for (int q = 0; q < nq; ++q) {
+    const int p = qpix[q];
+    f32x4 c[4];
+    if (vector_env) {
+      for (int ch = 0; ch < 4; ++ch)
+        c[ch] = load4(cf[ch], q);
       for (int k = 0; k < ss.unit_count; ++k) {
-        float cv[4];
-        tex_env(ss.unit[k], ss.unit[k].view.base, c, cf[f], tf, ss.slot_of_unit, tf[k], cv);
+        const ShadeUnit& su = ss.unit[k];
+        const TexBase base = su.view.base;
+        // Table 3.22: which components the base format has picks the row.
+        const bool has_rgb = base != TexBase::Alpha;
+        const bool has_alpha = base == TexBase::Alpha || base == TexBase::LuminanceAlpha ||
+                               base == TexBase::Intensity || base == TexBase::RGBA;
+        const bool modulate = su.mode == GL_MODULATE;
+        for (int ch = 0; ch < 4; ++ch) {
+          if (ch < 3 ? has_rgb : has_alpha) {
+            const f32x4 cs = load4(tex[k][ch], q);
+            c[ch] = modulate ? c[ch] * cs : cs;
+          }
+          c[ch] = clamp01v(c[ch]);
+        }
+      }
+      // §3.9 clamps the sum; llvmpipe (the tie-breaker) carries it unclamped and clamps only
+      // the final colour.
+      if (ss.color_sum)
+        for (int ch = 0; ch < 3; ++ch)
+          c[ch] += load4(c2[ch], q);
+      if (ss.fog) {
+        const f32x4 coord = evalv(si.fog_w, load4(fiq, q), load4(fjq, q)) * load4(w, q);
+        // GL_FOG_HINT = FASTEST: the geometry stage evaluated f per vertex and `coord` is its
+        // interpolation (§3.10 "may be computed at each vertex and interpolated").
+        f32x4 fog = clamp01v(coord);
+        if (!ss.fog_per_vertex)
+          for (int l = 0; l < 4; ++l)
+            fog[l] = (qcov[q] & (1u << l)) != 0 ? fog_factor(ss, coord[l]) : 0.0f;
+        // §3.10: C = f C_r + (1 - f) C_f on R, G and B; alpha is unchanged.
+        for (int ch = 0; ch < 3; ++ch)
+          c[ch] = fog * c[ch] + (1.0f - fog) * ss.fog_color[ch];
+      }
+    } else {
+      for (int l = 0; l < 4; ++l) {
+        const int e = 4 * q + l;
+        const float cfl[4] = {cf[0][e], cf[1][e], cf[2][e], cf[3][e]};
+        float cl[4] = {cfl[0], cfl[1], cfl[2], cfl[3]};
+        if (ss.unit_count != 0) {
+          float tf[kMaxTexUnits][4];
+          for (int k = 0; k < ss.unit_count; ++k)
+            for (int ch = 0; ch < 4; ++ch)
+              tf[k][ch] = tex[k][ch][e];
+          for (int k = 0; k < ss.unit_count; ++k) {
+            float cv[4];
+            tex_env(ss.unit[k], ss.unit[k].view.base, cl, cfl, tf, ss.slot_of_unit, tf[k], cv);
+            for (int ch = 0; ch < 4; ++ch)
+              cl[ch] = cv[ch];
+          }
+        }
+        if (ss.color_sum)
+          for (int ch = 0; ch < 3; ++ch)
+            cl[ch] += c2[ch][e];
+        if (ss.fog && (qcov[q] & (1u << l)) != 0) {
+          const float coord = eval(si.fog_w, fiq[e], fjq[e]) * w[e];
+          // GL_FOG_HINT = FASTEST: the geometry stage evaluated f per vertex and `coord` is
+          // its interpolation (§3.10 "may be computed at each vertex and interpolated").
+          const float fog = ss.fog_per_vertex ? clamp01(coord) : fog_factor(ss, coord);
+          // §3.10: C = f C_r + (1 - f) C_f on R, G and B; alpha is unchanged.
+          for (int ch = 0; ch < 3; ++ch)
+            cl[ch] = fog * cl[ch] + (1.0f - fog) * ss.fog_color[ch];
+        }
         for (int ch = 0; ch < 4; ++ch)
-          c[ch] = cv[ch];
+          c[ch][l] = cl[ch];
       }
     }
-    // §3.9 clamps the sum; llvmpipe (the tie-breaker) carries it unclamped into fog and
-    // clamps only the final colour, which differs once the sum exceeds 1 under fog.
-    if (ss.color_sum)
-      for (int ch = 0; ch < 3; ++ch)
-        c[ch] += c2[f][ch];
-    if (ss.fog) {
-      const float fi = fi0 + static_cast<float>(p & 7), fj = fj0 + static_cast<float>(p >> 3);
-      const float coord = eval(si.fog_w, fi, fj) * w[p];
-      // GL_FOG_HINT = FASTEST: the geometry stage evaluated f per vertex and `coord` is its
-      // interpolation (§3.10 "may be computed at each vertex and interpolated").
-      const float fog = ss.fog_per_vertex ? clamp01(coord) : fog_factor(ss, coord);
-      // §3.10: C = f C_r + (1 - f) C_f on R, G and B; alpha is unchanged.
-      for (int ch = 0; ch < 3; ++ch)
-        c[ch] = fog * c[ch] + (1.0f - fog) * ss.fog_color[ch];
+    // Lanes 0, 1 are pixels p, p + 1; lanes 2, 3 the row above.
+    for (int ch = 0; ch < 4; ++ch) {
+#if defined(__SSE2__)
+      _mm_storel_pi(reinterpret_cast<__m64*>(&out[ch][p]), c[ch]);
+      _mm_storeh_pi(reinterpret_cast<__m64*>(&out[ch][p + 8]), c[ch]);
+#else
+      const f32x4 hi = __builtin_shufflevector(c[ch], c[ch], 2, 3, 2, 3);
+      std::memcpy(&out[ch][p], &c[ch], 2 * sizeof(float));
+      std::memcpy(&out[ch][p + 8], &hi, 2 * sizeof(float));
+#endif
     }
-    for (int ch = 0; ch < 4; ++ch)
-      out[ch][p] = c[ch];
   }
+}
+
+void shade_block_sse2(const FragCtx& ctx, const FragInputs& in, int bx, int by, uint64_t mask,
+                      float (*out)[64]) {
+  shade_body(ctx, in, bx, by, mask, out);
+}
+
+#if defined(__x86_64__)
+[[gnu::target("avx2")]] void shade_block_avx2(const FragCtx& ctx, const FragInputs& in, int bx,
+                                              int by, uint64_t mask, float (*out)[64]) {
+  shade_body(ctx, in, bx, by, mask, out);
+}
+
+#endif
+
+} // namespace
+
+void shade_block(const FragCtx& ctx, const FragInputs& in, int bx, int by, uint64_t mask,
+                 float (*out)[64]) {
+#if defined(__x86_64__)
+  if (use_avx2()) return shade_block_avx2(ctx, in, bx, by, mask, out);
+#endif
+  shade_block_sse2(ctx, in, bx, by, mask, out);
 }
 
 } // namespace pineda

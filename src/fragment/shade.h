@@ -63,8 +63,9 @@ struct ShadeInputs {
 };
 
 // Colours of the fragments of `mask` in the block at (bx, by): out[c][8 * row + column] for
-// c = R, G, B, A, unclamped-safe floats (the block loop clamps and rounds). Other entries are
-// left as they are.
+// c = R, G, B, A, unclamped-safe floats (the block loop clamps and rounds). Every entry of a
+// row holding a fragment of `mask` is written (entries of no fragment with some defined value); the
+// other rows are left as they are.
 void shade_block(const FragCtx& ctx, const FragInputs& in, int bx, int by, uint64_t mask,
                  float (*out)[64]);
 

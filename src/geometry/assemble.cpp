@@ -16,6 +16,7 @@
 #include "geometry/clip.h"
 #include "geometry/cull.h"
 #include "raster/raster.h"
+#include "raster/setup.h"
 
 namespace pineda {
 
@@ -43,6 +44,11 @@ struct RasterSink {
                 bool back) {
     raster_triangle(dc, a, b, c, provoking, back);
   }
+  // The hot path: the positions come snapped from the facing test.
+  void triangle_snapped(const SnappedTri& t, const PVertex& a, const PVertex& b, const PVertex& c,
+                        const PVertex& provoking, bool back) {
+    raster_triangle_snapped(dc, t, a, b, c, provoking, back);
+  }
   void line(const PVertex& a, const PVertex& b, const PVertex& provoking) {
     raster_line(dc, a, b, provoking);
   }
@@ -62,10 +68,10 @@ struct IndexedFetch {
 
 template <class Sink> class Assembler {
 public:
-  Assembler(const DrawCall& dc, Sink& sink) : sink_(sink), stipple_counter_(dc.stipple_counter) {
+  Assembler(const DrawCall& dc, Sink& sink)
+      : sink_(sink), stipple_counter_(dc.stipple_counter), state_(*dc.state), bands_(dc.bands) {
     const RasterState& rs = *dc.state;
     init_face_state(face_, rs);
-    init_clip_setup(clip_, rs);
     fill_fast_ = rs.polygon_mode[0] == GL_FILL && rs.polygon_mode[1] == GL_FILL && !rs.two_sided;
     outlined_ = rs.polygon_mode[0] != GL_FILL || rs.polygon_mode[1] != GL_FILL;
   }
@@ -103,17 +109,35 @@ private:
       triangle_clipped(a, b, c, edges, pv);
       return;
     }
-    const int64_t area2 = fixed_area2(a, b, c);
+    // A worker sharing the draw (draw_shared) skips at once the filled triangles that lie
+    // outside its rows, whichever way they face: raster_triangle would draw nothing of them.
+    if (fill_fast_ && bands_.count > 1 && !rows_owned(a, b, c)) return;
+    const SnappedTri t = snap_triangle(a, b, c);
+    const int64_t area2 = snapped_area2(t);
     const bool back = is_back_facing(face_, area2);
     if (is_culled(face_, back)) return;
     if (fill_fast_) {
-      if (area2 != 0 || Sink::kKeepsZeroArea) sink_.triangle(a, b, c, pv, back);
+      if (area2 != 0 || Sink::kKeepsZeroArea) {
+        if constexpr (requires { sink_.triangle_snapped(t, a, b, c, pv, back); })
+          sink_.triangle_snapped(t, a, b, c, pv, back);
+        else
+          sink_.triangle(a, b, c, pv, back);
+      }
       return;
     }
     const PVertex* v[3] = {&a, &b, &c};
     const bool e[3] = {(edges & kEdgeAB) != 0, (edges & kEdgeBC) != 0, (edges & kEdgeCA) != 0};
     // Mesa outlines an unclipped triangle starting with its closing edge c->a.
     emit_polygon(face_, sink_, v, e, 3, 2, pv, back, area2);
+  }
+
+  // Whether any pixel row a triangle of unclipped vertices may cover is this worker's: the
+  // rows of its window y range, widened by one each way for the snapping.
+  bool rows_owned(const PVertex& a, const PVertex& b, const PVertex& c) const {
+    const float y0 = std::min({a.win[1], b.win[1], c.win[1]});
+    const float y1 = std::max({a.win[1], b.win[1], c.win[1]});
+    // Inside the guard band (clip code zero), so the conversions are in range.
+    return bands_own_rows(bands_, static_cast<int>(y0) - 1, static_cast<int>(y1) + 1);
   }
 
   void line_clipped(const PVertex& a, const PVertex& b);
@@ -130,10 +154,23 @@ private:
     if (outlined_) reset_stipple();
   }
 
+  // The clipper's setup, made when the draw's first primitive needs clipping: a draw of one
+  // unclipped triangle (immediate mode) does not pay for it.
+  const ClipSetup& clip_setup() {
+    if (!clip_ready_) {
+      init_clip_setup(clip_, state_);
+      clip_ready_ = true;
+    }
+    return clip_;
+  }
+
   Sink& sink_;
   float* stipple_counter_ = nullptr;
+  const RasterState& state_;
+  Bands bands_;
   FaceState face_;
   ClipSetup clip_;
+  bool clip_ready_ = false;
   // Both faces FILL and one-sided colours: an unclipped triangle needs no edge flags, no
   // colour swap and no fan, only the rasterizer call.
   bool fill_fast_ = true;
@@ -146,7 +183,8 @@ template <class Sink>
   ClipScratch scratch;
   const PVertex* ca = nullptr;
   const PVertex* cb = nullptr;
-  if (!clip_segment(clip_, planes_for_mask(a.clipmask | b.clipmask), a, b, scratch, &ca, &cb))
+  if (!clip_segment(clip_setup(), planes_for_mask(a.clipmask | b.clipmask), a, b, scratch, &ca,
+                    &cb))
     return;
   // The original second vertex keeps supplying the flat colour.
   sink_.line(*ca, *cb, b);
@@ -165,7 +203,8 @@ template <class Sink>
   poly.edge[0] = (edges & kEdgeAB) != 0;
   poly.edge[1] = (edges & kEdgeBC) != 0;
   poly.edge[2] = (edges & kEdgeCA) != 0;
-  if (!clip_polygon(clip_, planes_for_mask(a.clipmask | b.clipmask | c.clipmask), poly, scratch))
+  if (!clip_polygon(clip_setup(), planes_for_mask(a.clipmask | b.clipmask | c.clipmask), poly,
+                    scratch))
     return;
   // Facing of what remains (GL 2.1 §3.5.1: facing is decided after clipping), from the same
   // snapped coordinates the rasterizer sees.
@@ -369,16 +408,24 @@ void draw_shared(const DrawCall& dc, const FragCtx& frag, int n, GLenum mode, co
 
 } // namespace
 
+// A draw without the context's fragment setup (tests calling the back end directly): made
+// here, out of the line of the common path, whose FragCtx would otherwise be built per draw.
+[[gnu::noinline]] static void draw_with_local_frag(const DrawCall& dc, GLenum mode,
+                                                   const PVertex* verts, const uint32_t* indices,
+                                                   size_t count) {
+  FragCtx local;
+  prepare_fragments(*dc.state, *dc.fb, local);
+  DrawCall with = dc;
+  with.frag = &local;
+  draw_primitives(with, mode, verts, indices, count);
+}
+
 void draw_primitives(const DrawCall& dc, GLenum mode, const PVertex* verts, const uint32_t* indices,
                      size_t count) {
   // The fragment stage is set up once for the whole draw, not once per primitive, or comes
   // with the draw (the context's draw cache).
-  FragCtx local;
+  if (dc.frag == nullptr) return draw_with_local_frag(dc, mode, verts, indices, count);
   const FragCtx* frag = dc.frag;
-  if (frag == nullptr) {
-    prepare_fragments(*dc.state, *dc.fb, local);
-    frag = &local;
-  }
   frag->samples_passed = 0;
   // The thread count first: with one thread (PINEDA_THREADS=1) no draw pays for the estimate.
   const int n = dc.workers != nullptr ? dc.workers->threads() : 1;

@@ -109,20 +109,23 @@ void init_clip_setup(ClipSetup& cs, const RasterState& rs) {
 }
 
 uint32_t clip_code(const ClipSetup& cs, const float* clip) {
-  uint32_t m = 0;
-  for (int p = 0; p < 6; ++p)
-    if (!(plane_distance(cs, p, clip) >= 0.0f)) m |= 1u << p;
-  for (int i = 0; i < 6; ++i)
-    if ((cs.user_mask & (1u << i)) && !(plane_distance(cs, kFirstUserPlane + i, clip) >= 0.0f))
-      m |= kClipUser0 << i;
+  // plane_distance's expressions written out, without its switch.
+  const float x = clip[0], y = clip[1], z = clip[2], w = clip[3];
+  uint32_t m = (!(x + w >= 0.0f) ? kClipLeft : 0u) | (!(w - x >= 0.0f) ? kClipRight : 0u) |
+               (!(y + w >= 0.0f) ? kClipBottom : 0u) | (!(w - y >= 0.0f) ? kClipTop : 0u) |
+               (!(z + w >= 0.0f) ? kClipNear : 0u) | (!(w - z >= 0.0f) ? kClipFar : 0u);
+  for (uint32_t planes = cs.user_mask; planes != 0; planes &= planes - 1) {
+    const int i = __builtin_ctz(planes);
+    if (!(plane_distance(cs, kFirstUserPlane + i, clip) >= 0.0f)) m |= kClipUser0 << i;
+  }
   // w <= 0 only survives the frustum tests at the origin, which has no projection; an
   // infinite w would pass every test yet poisons interpolation; a denormal w passes too, but
   // its reciprocal (to_window) overflows to infinity. All go to the clipper.
-  bool guard = !(clip[3] >= std::numeric_limits<float>::min() &&
-                 clip[3] <= std::numeric_limits<float>::max());
-  for (int p = kFirstGuardPlane; p < kNumClipPlanes; ++p)
-    guard = guard || !(plane_distance(cs, p, clip) >= 0.0f);
-  if (guard) m |= kClipGuard;
+  const bool w_ok =
+      w >= std::numeric_limits<float>::min() && w <= std::numeric_limits<float>::max();
+  const bool inside_guard = x - cs.gx0 * w >= 0.0f && cs.gx1 * w - x >= 0.0f &&
+                            y - cs.gy0 * w >= 0.0f && cs.gy1 * w - y >= 0.0f;
+  if (!(w_ok && inside_guard)) m |= kClipGuard;
   return m;
 }
 

@@ -7,6 +7,8 @@
 #include <cstring>
 #include <type_traits>
 
+#include "raster/workers.h"
+
 namespace pineda {
 
 size_t type_size(GLenum type) {
@@ -37,14 +39,20 @@ size_t array_stride(const ClientArray& a) {
 namespace {
 
 // Element k of the draw: either first + k or list[k].
+// from(k0): the elements from k of the draw on.
 struct RangeElements {
   size_t first;
   size_t operator[](size_t k) const { return first + k; }
+  RangeElements from(size_t k0) const { return {first + k0}; }
 };
 struct ListElements {
   const uint32_t* list;
   size_t operator[](size_t k) const { return list[k]; }
+  ListElements from(size_t k0) const { return {list + k0}; }
 };
+
+// Draws of at least this many elements are fetched by every worker thread.
+constexpr size_t kShareFetchCount = 8192;
 
 // GL 2.1 Table 2.9 conversions for normalized attributes (colours, normals).
 template <typename T> inline float to_float(T v, bool normalized) {
@@ -59,19 +67,37 @@ template <typename T> inline float to_float(T v, bool normalized) {
   return static_cast<float>(v);
 }
 
-// Copy `a.size` components of each element into dst (one float[4] per vertex, at byte
-// offset `field` inside InputVertex), leaving the remaining components as they are.
-template <typename T, typename Elements>
-void convert(const uint8_t* base, size_t stride, int size, bool normalized, Elements el, size_t n,
-             InputVertex* out, size_t field) {
+// Copy kSize components of each element into dst (one float[4] per vertex, at byte offset
+// `field` inside InputVertex), leaving the remaining components as they are.
+template <typename T, int kSize, typename Elements>
+void convert_n(const uint8_t* base, size_t stride, bool normalized, Elements el, size_t n,
+               InputVertex* out, size_t field) {
   for (size_t k = 0; k < n; ++k) {
     const uint8_t* src = base + el[k] * stride;
     float* dst = reinterpret_cast<float*>(reinterpret_cast<uint8_t*>(&out[k]) + field);
-    for (int c = 0; c < size; ++c) {
+    for (int c = 0; c < kSize; ++c) {
       T v;
       std::memcpy(&v, src + c * sizeof(T), sizeof(T));
       dst[c] = to_float(v, normalized);
     }
+  }
+}
+
+// The component count as a constant, so that the per-element copy has no inner loop.
+template <typename T, typename Elements>
+void convert(const uint8_t* base, size_t stride, int size, bool normalized, Elements el, size_t n,
+             InputVertex* out, size_t field) {
+  switch (size) {
+  case 1:
+    return convert_n<T, 1>(base, stride, normalized, el, n, out, field);
+  case 2:
+    return convert_n<T, 2>(base, stride, normalized, el, n, out, field);
+  case 3:
+    return convert_n<T, 3>(base, stride, normalized, el, n, out, field);
+  case 4:
+    return convert_n<T, 4>(base, stride, normalized, el, n, out, field);
+  default:
+    return;
   }
 }
 
@@ -166,30 +192,47 @@ bool fetch(Context* ctx, Elements el, size_t n, size_t max_element, uint32_t tex
     def.color2[i] = ctx->cur_color2[i];
   def.fog = ctx->texpipe.cur_fog_coord;
   def.edge = ctx->cur_edge ? 1u : 0u;
-  // The attributes before `tex` always, then only the units asked for.
-  constexpr size_t kHead = offsetof(InputVertex, tex);
-  for (size_t k = 0; k < n; ++k) {
-    std::memcpy(static_cast<void*>(&out[k]), &def, kHead); // trivially copyable
-    for (uint32_t units = tex_units; units != 0; units &= units - 1) {
-      const int u = __builtin_ctz(units);
-      std::memcpy(out[k].tex[u], def.tex[u], sizeof def.tex[u]);
+  // Elements [k0, k1) of the draw: independent of each other, so a large draw's are split
+  // among the worker threads as the transform's are (transform.cpp).
+  const auto fill = [&](size_t k0, size_t k1) {
+    const Elements sub = el.from(k0);
+    const size_t m = k1 - k0;
+    InputVertex* dst = out + k0;
+    // The attributes before `tex` always, then only the units asked for.
+    constexpr size_t kHead = offsetof(InputVertex, tex);
+    for (size_t k = 0; k < m; ++k) {
+      std::memcpy(static_cast<void*>(&dst[k]), &def, kHead); // trivially copyable
+      for (uint32_t units = tex_units; units != 0; units &= units - 1) {
+        const int u = __builtin_ctz(units);
+        std::memcpy(dst[k].tex[u], def.tex[u], sizeof def.tex[u]);
+      }
     }
-  }
-
-  if (bases[0]) convert_any(arr.vertex, bases[0], false, el, n, out, offsetof(InputVertex, pos));
-  if (bases[1]) convert_any(arr.color, bases[1], true, el, n, out, offsetof(InputVertex, color));
-  if (bases[2]) convert_any(arr.normal, bases[2], true, el, n, out, offsetof(InputVertex, normal));
-  if (bases[4])
-    convert_any(arr.secondary, bases[4], true, el, n, out, offsetof(InputVertex, color2));
-  if (bases[5]) convert_any(arr.fog, bases[5], false, el, n, out, offsetof(InputVertex, fog));
-  for (int u = 0; u < kMaxTexUnits; ++u)
-    if (bases[6 + u] && (tex_units >> u & 1u) != 0)
-      convert_any(arr.texcoord[u], bases[6 + u], false, el, n, out,
-                  offsetof(InputVertex, tex) + sizeof(float[4]) * static_cast<size_t>(u));
-  if (bases[3]) {
-    const size_t stride = array_stride(arr.edgeflag);
-    for (size_t k = 0; k < n; ++k)
-      out[k].edge = bases[3][el[k] * stride] != 0 ? 1u : 0u;
+    if (bases[0]) convert_any(arr.vertex, bases[0], false, sub, m, dst, offsetof(InputVertex, pos));
+    if (bases[1]) convert_any(arr.color, bases[1], true, sub, m, dst, offsetof(InputVertex, color));
+    if (bases[2])
+      convert_any(arr.normal, bases[2], true, sub, m, dst, offsetof(InputVertex, normal));
+    if (bases[4])
+      convert_any(arr.secondary, bases[4], true, sub, m, dst, offsetof(InputVertex, color2));
+    if (bases[5]) convert_any(arr.fog, bases[5], false, sub, m, dst, offsetof(InputVertex, fog));
+    for (int u = 0; u < kMaxTexUnits; ++u)
+      if (bases[6 + u] && (tex_units >> u & 1u) != 0)
+        convert_any(arr.texcoord[u], bases[6 + u], false, sub, m, dst,
+                    offsetof(InputVertex, tex) + sizeof(float[4]) * static_cast<size_t>(u));
+    if (bases[3]) {
+      const size_t stride = array_stride(arr.edgeflag);
+      for (size_t k = 0; k < m; ++k)
+        dst[k].edge = bases[3][sub[k] * stride] != 0 ? 1u : 0u;
+    }
+  };
+  const int threads = n >= kShareFetchCount ? ctx->workers.threads() : 1;
+  if (threads > 1) {
+    auto part = [&](int i) {
+      const auto t = static_cast<size_t>(threads);
+      fill(n * static_cast<size_t>(i) / t, n * static_cast<size_t>(i + 1) / t);
+    };
+    ctx->workers.run(part);
+  } else {
+    fill(0, n);
   }
   return true;
 }

@@ -3,6 +3,7 @@
 // need no clipping, and the vertex colours: lit (§2.14.1, light_eval.cpp) or the clamped
 // current colours, with the colour sum (§3.9) folded in unless texturing or fog is on; texture
 // and fog coordinates (texcoord.cpp); derived point sizes (GL 1.4 point parameters).
+#include <algorithm>
 #include <cmath>
 
 #include "geometry/clip.h"
@@ -10,6 +11,7 @@
 #include "geometry/geometry.h"
 #include "geometry/light_eval.h"
 #include "geometry/texcoord.h"
+#include "geometry/vertex_simd.h"
 #include "raster/raster.h"
 #include "raster/workers.h"
 #include "state/draw_read_buffer.h"
@@ -51,6 +53,12 @@ DrawCache& current_draw_cache(Context* ctx) {
 // thread; below it, waking the workers costs more than it saves.
 constexpr size_t kShareVertexCount = 4096;
 
+// Vertices per slice of a large draw of independent primitives (draw_vertices_once): a
+// multiple of 1, 2, 3 and 4 vertices, and at least kShareVertexCount so that a slice's
+// transform is still shared among the workers.
+constexpr size_t kSliceVertices = 12 * 2048;
+static_assert(kSliceVertices >= kShareVertexCount);
+
 // What the per-vertex loop reads, gathered once per draw.
 struct VertexJob {
   const InputVertex* in;
@@ -70,6 +78,52 @@ struct VertexJob {
   const glm::mat4* mv;
 };
 
+// Everything of vertex i but its clip and window coordinates and lit colours: the unlit
+// colours, the colour sum, the edge flag, texture and fog coordinates and the point size.
+template <bool kLit, bool kExtra>
+[[gnu::always_inline]] inline void finish_vertex(const VertexJob& job, size_t i) {
+  const InputVertex& v = job.in[i];
+  PVertex& p = job.out[i];
+  if constexpr (kLit) {
+    if (job.fold_sum) add_secondary(p.attr, job.two_sided);
+  } else {
+    // GL 2.1 §2.14.6: with lighting off the primary colour is the current colour, clamped.
+    for (int c = 0; c < 4; ++c) {
+      const float col = v.color[c];
+      p.attr[kAttrColor + c] = col > 0.0f ? (col < 1.0f ? col : 1.0f) : 0.0f;
+    }
+    if (job.color_sum) {
+      for (int c = 0; c < 3; ++c) {
+        const float col = v.color2[c];
+        p.attr[kAttrColor2 + c] = col > 0.0f ? (col < 1.0f ? col : 1.0f) : 0.0f;
+      }
+      if (job.fold_sum) add_secondary(p.attr, false);
+    }
+  }
+  p.edgeflag = v.edge;
+  p.point_size = 1.0f;
+  if constexpr (kExtra) {
+    if (job.tex_live) tex_vertex(*job.tvs, v.pos, v.normal, v.tex, v.fog, p.attr);
+    const RasterModes& modes = *job.modes;
+    if (modes.point_attenuated) {
+      const glm::mat4& mv = *job.mv;
+      const float x = v.pos[0], y = v.pos[1], z = v.pos[2], w = v.pos[3];
+      const float ez = mv[0][2] * x + mv[1][2] * y + mv[2][2] * z + mv[3][2] * w;
+      const float d = ez < 0.0f ? -ez : ez;
+      const float* a = modes.point_attenuation;
+      const float size = modes.point_size / std::sqrt(a[0] + a[1] * d + a[2] * d * d);
+      // A NaN (attenuation <= 0) becomes the minimum.
+      p.point_size = size >= modes.point_size_min
+                         ? (size < modes.point_size_max ? size : modes.point_size_max)
+                         : modes.point_size_min;
+    }
+  }
+}
+
+// Vertices per pass of the four-lane functions (vertex_simd.h): the pass's vertices stay in
+// the cache between transform, lighting and finish_vertex.
+constexpr size_t kVertexChunk = 128;
+
 // The per-vertex loop, instantiated for lighting on or off and for whether any of texture
 // coordinates, fog or point attenuation is live, so the common draws carry no test for
 // what they do not use.
@@ -84,6 +138,19 @@ template <bool kLit, bool kExtra> void transform_vertices(const VertexJob& job) 
     const LightSetup& ls = job.lighting->setup;
     tracking = ls.track[0] || ls.track[1];
     if (!tracking) prepare_lit_faces(ls, material, nullptr, faces);
+  }
+  // One material for the whole draw: four vertices at a time. A single primitive of
+  // immediate mode (a few vertices) stays on the plain loop.
+  if (job.n >= 8 && (!kLit || (!tracking && job.change_count == 0))) {
+    for (size_t i0 = 0; i0 < job.n; i0 += kVertexChunk) {
+      const size_t count = std::min(kVertexChunk, job.n - i0);
+      transform_positions(m, *job.cs, *job.vp, job.in + i0, job.out + i0, count);
+      if constexpr (kLit)
+        light_vertices(job.lighting->setup, faces, job.in + i0, job.out + i0, count);
+      for (size_t i = i0; i < i0 + count; ++i)
+        finish_vertex<kLit, kExtra>(job, i);
+    }
+    return;
   }
   for (size_t i = 0; i < job.n; ++i) {
     const InputVertex& v = job.in[i];
@@ -102,38 +169,8 @@ template <bool kLit, bool kExtra> void transform_vertices(const VertexJob& job) 
       }
       if (tracking) prepare_lit_faces(ls, material, v.color, faces);
       light_vertex_faces(ls, faces, v.pos, v.normal, p.attr);
-      if (job.fold_sum) add_secondary(p.attr, job.two_sided);
-    } else {
-      // GL 2.1 §2.14.6: with lighting off the primary colour is the current colour, clamped.
-      for (int c = 0; c < 4; ++c) {
-        const float col = v.color[c];
-        p.attr[kAttrColor + c] = col > 0.0f ? (col < 1.0f ? col : 1.0f) : 0.0f;
-      }
-      if (job.color_sum) {
-        for (int c = 0; c < 3; ++c) {
-          const float col = v.color2[c];
-          p.attr[kAttrColor2 + c] = col > 0.0f ? (col < 1.0f ? col : 1.0f) : 0.0f;
-        }
-        if (job.fold_sum) add_secondary(p.attr, false);
-      }
     }
-    p.edgeflag = v.edge;
-    p.point_size = 1.0f;
-    if constexpr (kExtra) {
-      if (job.tex_live) tex_vertex(*job.tvs, v.pos, v.normal, v.tex, v.fog, p.attr);
-      const RasterModes& modes = *job.modes;
-      if (modes.point_attenuated) {
-        const glm::mat4& mv = *job.mv;
-        const float ez = mv[0][2] * x + mv[1][2] * y + mv[2][2] * z + mv[3][2] * w;
-        const float d = ez < 0.0f ? -ez : ez;
-        const float* a = modes.point_attenuation;
-        const float size = modes.point_size / std::sqrt(a[0] + a[1] * d + a[2] * d * d);
-        // A NaN (attenuation <= 0) becomes the minimum.
-        p.point_size = size >= modes.point_size_min
-                           ? (size < modes.point_size_max ? size : modes.point_size_max)
-                           : modes.point_size_min;
-      }
-    }
+    finish_vertex<kLit, kExtra>(job, i);
   }
 }
 
@@ -146,11 +183,9 @@ void draw_vertices_once(Context* ctx, GLenum mode, const InputVertex* in, size_t
   DrawCache& cache = current_draw_cache(ctx);
 
   std::vector<PVertex>& out = ctx->pvert_scratch;
-  if (out.size() < n) out.resize(n);
-
   VertexJob job;
   job.in = in;
-  job.out = out.data();
+  job.out = nullptr; // set once `out` has its size
   job.n = n;
   job.m = &ctx->mvp[0][0];
   job.cs = &cache.clip;
@@ -190,28 +225,23 @@ void draw_vertices_once(Context* ctx, GLenum mode, const InputVertex* in, size_t
   // Vertices are independent of each other, so a large draw's are split into one contiguous
   // range per worker thread (raster/workers.h). Material changes between Begin and End
   // (immediate mode, a few vertices) depend on the vertex index: they stay on one thread.
-  const int threads = n >= kShareVertexCount && job.change_count == 0 ? ctx->workers.threads() : 1;
-  if (threads > 1) {
+  const auto transform_all = [&](const VertexJob& range) {
+    const size_t m = range.n;
+    const int threads =
+        m >= kShareVertexCount && range.change_count == 0 ? ctx->workers.threads() : 1;
+    if (threads <= 1) return transform(range);
     auto part = [&](int i) {
-      VertexJob j = job;
-      const size_t first = n * static_cast<size_t>(i) / static_cast<size_t>(threads);
-      const size_t last = n * static_cast<size_t>(i + 1) / static_cast<size_t>(threads);
-      j.in = in + first;
-      j.out = job.out + first;
-      j.n = last - first;
+      VertexJob j = range;
+      const auto t = static_cast<size_t>(threads);
+      const size_t lo = m * static_cast<size_t>(i) / t, hi = m * static_cast<size_t>(i + 1) / t;
+      j.in = range.in + lo;
+      j.out = range.out + lo;
+      j.n = hi - lo;
       transform(j);
     };
     ctx->workers.run(part);
-  } else {
-    transform(job);
-  }
+  };
 
-  // GL 2.1 §5.2, §5.3: in SELECT and FEEDBACK mode the primitives go to selection or
-  // feedback instead of the rasterizer.
-  if (!render_mode_is_render(ctx)) {
-    select_feedback_draw(ctx, in, out.data(), n, mode, indices, count);
-    return;
-  }
   Framebuffer& fb = ctx->fb;
   DrawCall dc;
   dc.state = &rs;
@@ -219,6 +249,37 @@ void draw_vertices_once(Context* ctx, GLenum mode, const InputVertex* in, size_t
   dc.frag = &cache.frag;
   if (rs.count_samples) dc.samples_passed = &ctx->queries.samples_passed;
   dc.workers = &ctx->workers;
+
+  // Independent points, segments, triangles and quads in order (a large glBegin/glEnd or
+  // DrawArrays) are transformed and drawn a slice at a time, so that the processed vertices
+  // are still in the cache when they are drawn. Each slice holds whole primitives and the
+  // primitives reach the rasterizer in the same order; no state crosses a slice boundary
+  // (the line stipple restarts with every independent segment and outlined polygon).
+  const bool independent =
+      mode == GL_POINTS || mode == GL_LINES || mode == GL_TRIANGLES || mode == GL_QUADS;
+  if (n > kSliceVertices && independent && indices == nullptr && count == n &&
+      job.change_count == 0 && render_mode_is_render(ctx)) {
+    if (out.size() < kSliceVertices) out.resize(kSliceVertices);
+    for (size_t first = 0; first < n; first += kSliceVertices) {
+      VertexJob slice = job;
+      slice.in = in + first;
+      slice.out = out.data();
+      slice.n = std::min(kSliceVertices, n - first);
+      transform_all(slice);
+      draw_primitives(dc, mode, out.data(), nullptr, slice.n);
+    }
+    return;
+  }
+
+  if (out.size() < n) out.resize(n);
+  job.out = out.data();
+  transform_all(job);
+  // GL 2.1 §5.2, §5.3: in SELECT and FEEDBACK mode the primitives go to selection or
+  // feedback instead of the rasterizer.
+  if (!render_mode_is_render(ctx)) {
+    select_feedback_draw(ctx, in, out.data(), n, mode, indices, count);
+    return;
+  }
   draw_primitives(dc, mode, out.data(), indices, count);
 }
 

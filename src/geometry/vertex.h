@@ -31,15 +31,18 @@ enum ClipBit : uint32_t {
 };
 constexpr uint32_t kClipFrustumMask = 0x3f;
 
-struct PVertex {
-  float clip[4]; // clip coordinates (x, y, z, w)
-  float win[4];  // window x, y; z after depth range in [0,1]; win[3] = 1 / clip w.
-                 // Valid whenever clipmask == 0, and for every vertex the clipper emits.
-  float attr[kMaxAttr];
+// The fields the primitive assembly and the triangle setup read for every primitive (window
+// position, clip code, primary colour) come first, inside the first 64 bytes; with the
+// alignment each vertex's hot fields are one cache line.
+struct alignas(64) PVertex {
+  float win[4];      // window x, y; z after depth range in [0,1]; win[3] = 1 / clip w.
+                     // Valid whenever clipmask == 0, and for every vertex the clipper emits.
   uint32_t clipmask; // ClipBit set for this vertex
   uint32_t edgeflag; // GL edge flag (1 = boundary edge starts here)
   // Derived point size (GL 2.1 §3.3 eq 3.1) when distance attenuation is on; 1 otherwise.
   float point_size;
+  float attr[kMaxAttr];
+  float clip[4]; // clip coordinates (x, y, z, w)
 };
 
 } // namespace pineda

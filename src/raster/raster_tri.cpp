@@ -73,23 +73,35 @@ inline Edges32 make_edges32(const TriEdges& te) {
   return v;
 }
 
-// Rows r0..r1 of the block only (the rows the bounding box reaches; the others are masked off
-// by the caller anyway): one-pixel triangles then test one or two rows, not eight.
+// Eight bits, set where a lane of lo (bits 0-3) or hi (bits 4-7) is negative.
+inline unsigned negative_lanes(i32x4 lo, i32x4 hi) {
+#if defined(__SSE2__)
+  return lane_bits(lo, hi); // the sign bits themselves
+#else
+  const i32x4 zero = {};
+  return lane_bits(lo < zero, hi < zero);
+#endif
+}
+
+// Rows r0..r1 of the block only (the rows the bounding box reaches; the caller masks off the
+// others anyway): one-pixel triangles then test one or two rows, not eight.
 inline uint64_t partial_mask32(const Edges32& v, const int64_t e[3], int r0, int r1) {
   i32x4 row[3];
   for (int i = 0; i < 3; ++i)
     row[i] = i32x4{} + static_cast<int32_t>(e[i] + r0 * v.sy[i]);
-  const i32x4 zero = {};
-  uint64_t mask = 0;
+  // The OR of the three edge values is negative exactly where some edge excludes the pixel:
+  // its sign bits, collected as lane masks, are the pixels outside; the mask is their
+  // complement.
+  uint64_t outside = 0;
   for (int r = r0; r <= r1; ++r) {
     const i32x4 lo = (row[0] + v.lane_lo[0]) | (row[1] + v.lane_lo[1]) | (row[2] + v.lane_lo[2]);
     const i32x4 hi = (row[0] + v.lane_hi[0]) | (row[1] + v.lane_hi[1]) | (row[2] + v.lane_hi[2]);
-    mask |= static_cast<uint64_t>(lane_bits(lo >= zero, hi >= zero)) << (8 * r);
+    outside |= static_cast<uint64_t>(negative_lanes(lo, hi)) << (8 * r);
     if (r < r1) // stay within the bound: no step past the last row
       for (int i = 0; i < 3; ++i)
         row[i] += v.sy[i];
   }
-  return mask;
+  return ~outside;
 }
 
 // Bounding boxes wider than this get the block range of each block row narrowed to the
@@ -126,7 +138,7 @@ void traverse(const TriEdges& te, const FragCtx& ctx, const FragInputs& in, Bloc
   const Edges32 e32 = make_edges32(te);
 
   for (int by = te.miny & ~(B - 1); by <= te.maxy; by += B) {
-    if (!bands.owns(by)) continue;
+    if (!bands_own(bands, by)) continue;
     int64_t lo = bx_first, hi = bx_last;
     int64_t erow[3];
     bool skip = false;
@@ -178,37 +190,61 @@ void traverse(const TriEdges& te, const FragCtx& ctx, const FragInputs& in, Bloc
   }
 }
 
+// Bounding boxes of at most this many pixels inside one block are tested pixel by pixel
+// before the planes are set up (raster_triangle); larger ones go through traverse.
+constexpr int kSmallBox = 16;
+
 // Inlined into raster_triangle: with one-pixel triangles the call itself is a measurable part
 // of the cost.
 [[gnu::always_inline]] inline void triangle(const DrawCall& dc, const FragCtx& ctx,
-                                            const PVertex& a, const PVertex& b, const PVertex& c,
-                                            const PVertex& provoking, bool back_facing) {
+                                            const SnappedTri& t, const PVertex& a, const PVertex& b,
+                                            const PVertex& c, const PVertex& provoking,
+                                            bool back_facing) {
   if (ctx.noop) return;
-  const SnappedTri t = snap_triangle(a, b, c);
   if (dc.bands.count > 1) {
     // Another worker draws the whole triangle: skip its setup. Pixel centres inside lie in
     // the rows from floor(ymin) to floor(ymax).
     const int32_t ymin = std::min({t.y[0], t.y[1], t.y[2]});
     const int32_t ymax = std::max({t.y[0], t.y[1], t.y[2]});
-    if (!dc.bands.owns_any(std::max(ymin >> kSubpixelBits, ctx.clip_y0),
-                           std::min(ymax >> kSubpixelBits, ctx.clip_y1)))
+    if (!bands_own_rows(dc.bands, std::max(ymin >> kSubpixelBits, ctx.clip_y0),
+                        std::min(ymax >> kSubpixelBits, ctx.clip_y1)))
       return;
   }
   TriEdges te;
   if (!setup_edges(t, ctx.clip_x0, ctx.clip_y0, ctx.clip_x1, ctx.clip_y1, te)) return;
   const RasterState& rs = *dc.state;
+  const RasterModes& modes = rs.modes;
+  // A small bounding box inside one block (most small triangles): its coverage is found before any
+  // plane is set up, so a triangle that covers no pixel centre costs no more, and the block
+  // goes straight to the fragment stage. The mask is the one traverse would find (the exact
+  // edge tests inside the bounding box).
+  constexpr int B = kBlockSize;
+  const int bx = te.minx & ~(B - 1), by = te.miny & ~(B - 1);
+  const bool one_block = bx == (te.maxx & ~(B - 1)) && by == (te.maxy & ~(B - 1)) &&
+                         (te.maxx - te.minx + 1) * (te.maxy - te.miny + 1) <= kSmallBox;
+  uint64_t mask = 0;
+  if (one_block) {
+    if (!bands_own(dc.bands, by)) return;
+    int64_t e[3];
+    for (int i = 0; i < 3; ++i)
+      e[i] = te.e[i].base + by * te.e[i].sy + bx * te.e[i].sx;
+    mask = partial_mask64(te, e, te.minx - bx, te.maxx - bx, te.miny - by, te.maxy - by);
+    if (modes.polygon_stipple) mask &= stipple_block_mask(modes.polygon_stipple_rows, bx, by);
+    if (mask == 0) return;
+  }
   // GL 2.1 §2.14.1: with two-sided lighting a back-facing polygon takes the back colours.
   const int slot = (rs.two_sided && back_facing) ? kAttrBackColor : kAttrColor;
   FragInputs in;
   const PlaneSetup ps = make_plane_setup(t);
   const ShadePath shade = setup_triangle_inputs(ctx, ps, a, b, c, provoking, rs.flat, slot, in);
-  const RasterModes& modes = rs.modes;
   // GL 2.1 §3.5.5: the offset moves the whole depth plane (the fragment stage clamps).
   if (modes.offset_fill && ctx.needs_depth)
     in.z.v0 += polygon_offset_depth(modes, in.z.dx, in.z.dy, ctx.depth_max);
   const auto run = [&](ShadePath path) {
     const BlockFn fn = ctx.fn[static_cast<int>(path)];
-    if (modes.polygon_stipple)
+    if (one_block)
+      fn(ctx, in, bx, by, mask);
+    else if (modes.polygon_stipple)
       traverse<true>(te, ctx, in, fn, modes.polygon_stipple_rows, dc.bands);
     else
       traverse<false>(te, ctx, in, fn, nullptr, dc.bands);
@@ -225,10 +261,20 @@ void traverse(const TriEdges& te, const FragCtx& ctx, const FragInputs& in, Bloc
 
 void raster_triangle(const DrawCall& dc, const PVertex& a, const PVertex& b, const PVertex& c,
                      const PVertex& provoking, bool back_facing) {
-  if (dc.frag != nullptr) return triangle(dc, *dc.frag, a, b, c, provoking, back_facing);
+  const SnappedTri t = snap_triangle(a, b, c);
+  if (dc.frag != nullptr) return triangle(dc, *dc.frag, t, a, b, c, provoking, back_facing);
   FragCtx ctx;
   prepare_fragments(*dc.state, *dc.fb, ctx);
-  triangle(dc, ctx, a, b, c, provoking, back_facing);
+  triangle(dc, ctx, t, a, b, c, provoking, back_facing);
+}
+
+void raster_triangle_snapped(const DrawCall& dc, const SnappedTri& t, const PVertex& a,
+                             const PVertex& b, const PVertex& c, const PVertex& provoking,
+                             bool back_facing) {
+  if (dc.frag != nullptr) return triangle(dc, *dc.frag, t, a, b, c, provoking, back_facing);
+  FragCtx ctx;
+  prepare_fragments(*dc.state, *dc.fb, ctx);
+  triangle(dc, ctx, t, a, b, c, provoking, back_facing);
 }
 
 } // namespace pineda

@@ -9,42 +9,52 @@ namespace {
 constexpr int64_t kHalfPixel = kSubpixelOne / 2; // pixel centres sit at +0.5
 } // namespace
 
+namespace {
+
+// Edge p->q of a counter-clockwise triangle (setup.h): E(x, y) = (xq - xp)(y - yp) -
+// (yq - yp)(x - xp) = A x + B y + C, positive inside.
+inline void make_edge(int64_t xp, int64_t yp, int64_t xq, int64_t yq, EdgeFn& out) {
+  const int64_t A = yp - yq, B = xq - xp, C = xp * yq - xq * yp;
+  // Owning edges (setup.h): interior towards +x (A > 0), or horizontal with the interior
+  // towards +y (A == 0, B > 0). The others need E >= 1 at a centre.
+  const bool owns = A > 0 || (A == 0 && B > 0);
+  out.base = C + kHalfPixel * (A + B) - (owns ? 0 : 1);
+  out.sx = A * kSubpixelOne;
+  out.sy = B * kSubpixelOne;
+}
+
+} // namespace
+
 bool setup_edges(const SnappedTri& t, int cx0, int cy0, int cx1, int cy1, TriEdges& out) {
-  const int64_t x0 = t.x[0], y0 = t.y[0];
-  const int64_t area2 = (t.x[1] - x0) * (t.y[2] - y0) - (t.x[2] - x0) * (t.y[1] - y0);
+  // The bounding box first: most tiny triangles hold no pixel centre and need nothing else.
+  // Snapped positions lie inside the guard band (23 bits): 32-bit arithmetic is exact here.
+  const int32_t min_x = std::min({t.x[0], t.x[1], t.x[2]});
+  const int32_t max_x = std::max({t.x[0], t.x[1], t.x[2]});
+  const int32_t min_y = std::min({t.y[0], t.y[1], t.y[2]});
+  const int32_t max_y = std::max({t.y[0], t.y[1], t.y[2]});
+  constexpr int32_t kHalf = kSubpixelOne / 2, kOne = kSubpixelOne;
+  // Pixels whose centres lie in [min, max]: ceil((min - 128) / 256) .. floor((max - 128) / 256).
+  out.minx = std::max((min_x - kHalf + kOne - 1) >> kSubpixelBits, cx0);
+  out.maxx = std::min((max_x - kHalf) >> kSubpixelBits, cx1);
+  out.miny = std::max((min_y - kHalf + kOne - 1) >> kSubpixelBits, cy0);
+  out.maxy = std::min((max_y - kHalf) >> kSubpixelBits, cy1);
+  if (out.minx > out.maxx || out.miny > out.maxy) return false;
+
+  const int64_t area2 = snapped_area2(t);
   if (area2 == 0) return false; // GL 2.1 §3.5.1: zero area produces no fragments
 
   // Walk the vertices counter-clockwise (y up) so that every edge function is positive
   // inside; raster_triangle does not cull, so clockwise input is just reordered.
-  int order[3] = {0, 1, 2};
-  if (area2 < 0) std::swap(order[1], order[2]);
-  for (int i = 0; i < 3; ++i) {
-    const int p = order[i], q = order[(i + 1) % 3];
-    const int64_t xp = t.x[p], yp = t.y[p], xq = t.x[q], yq = t.y[q];
-    // E(x, y) = (xq - xp)(y - yp) - (yq - yp)(x - xp) = A x + B y + C
-    const int64_t A = yp - yq, B = xq - xp, C = xp * yq - xq * yp;
-    // Owning edges (setup.h): interior towards +x (A > 0), or horizontal with the interior
-    // towards +y (A == 0, B > 0). The others need E >= 1 at a centre.
-    const bool owns = A > 0 || (A == 0 && B > 0);
-    out.e[i].base = C + kHalfPixel * (A + B) - (owns ? 0 : 1);
-    out.e[i].sx = A * kSubpixelOne;
-    out.e[i].sy = B * kSubpixelOne;
+  const int64_t x0 = t.x[0], y0 = t.y[0];
+  int64_t x1 = t.x[1], y1 = t.y[1], x2 = t.x[2], y2 = t.y[2];
+  if (area2 < 0) {
+    std::swap(x1, x2);
+    std::swap(y1, y2);
   }
-
-  const int64_t min_x = std::min({t.x[0], t.x[1], t.x[2]});
-  const int64_t max_x = std::max({t.x[0], t.x[1], t.x[2]});
-  const int64_t min_y = std::min({t.y[0], t.y[1], t.y[2]});
-  const int64_t max_y = std::max({t.y[0], t.y[1], t.y[2]});
-  // Pixels whose centres lie in [min, max]: ceil((min - 128) / 256) .. floor((max - 128) / 256).
-  const int64_t px0 = (min_x - kHalfPixel + kSubpixelOne - 1) >> kSubpixelBits;
-  const int64_t px1 = (max_x - kHalfPixel) >> kSubpixelBits;
-  const int64_t py0 = (min_y - kHalfPixel + kSubpixelOne - 1) >> kSubpixelBits;
-  const int64_t py1 = (max_y - kHalfPixel) >> kSubpixelBits;
-  out.minx = static_cast<int>(std::max<int64_t>(px0, cx0));
-  out.maxx = static_cast<int>(std::min<int64_t>(px1, cx1));
-  out.miny = static_cast<int>(std::max<int64_t>(py0, cy0));
-  out.maxy = static_cast<int>(std::min<int64_t>(py1, cy1));
-  return out.minx <= out.maxx && out.miny <= out.maxy;
+  make_edge(x0, y0, x1, y1, out.e[0]);
+  make_edge(x1, y1, x2, y2, out.e[1]);
+  make_edge(x2, y2, x0, y0, out.e[2]);
+  return true;
 }
 
 PlaneSetup make_plane_setup(const SnappedTri& t) {
@@ -87,8 +97,8 @@ ShadePath setup_triangle_inputs(const FragCtx& ctx, const PlaneSetup& ps, const 
   in.oy = ps.oy;
   // GL 2.1 §3.5.1 eq 3.10: window z is interpolated linearly, without perspective.
   if (ctx.needs_depth)
-    in.z = plane_d(ps, a.win[2] * ctx.depth_max, b.win[2] * ctx.depth_max,
-                   c.win[2] * ctx.depth_max);
+    in.z =
+        plane_d(ps, a.win[2] * ctx.depth_max, b.win[2] * ctx.depth_max, c.win[2] * ctx.depth_max);
   if (!ctx.needs_color) return ShadePath::Const;
   // GL 2.1 §2.14.7: flat shading takes the provoking vertex's colour.
   if (flat) {
@@ -99,7 +109,8 @@ ShadePath setup_triangle_inputs(const FragCtx& ctx, const PlaneSetup& ps, const 
   const float* cb = b.attr + color_slot;
   const float* cc = c.attr + color_slot;
   bool same = true;
-  for (int k = 0; k < 4; ++k) same = same && ca[k] == cb[k] && ca[k] == cc[k];
+  for (int k = 0; k < 4; ++k)
+    same = same && ca[k] == cb[k] && ca[k] == cc[k];
   if (same) {
     const_color(a, color_slot, in.const_color);
     return ShadePath::Const;
@@ -107,7 +118,8 @@ ShadePath setup_triangle_inputs(const FragCtx& ctx, const PlaneSetup& ps, const 
   // GL 2.1 §3.5.1 eq 3.9: interpolate c/w and 1/w linearly, divide per fragment.
   const double wa = a.win[3], wb = b.win[3], wc = c.win[3];
   in.inv_w = plane_f(ps, wa, wb, wc);
-  for (int k = 0; k < 4; ++k) in.color_w[k] = plane_f(ps, ca[k] * wa, cb[k] * wb, cc[k] * wc);
+  for (int k = 0; k < 4; ++k)
+    in.color_w[k] = plane_f(ps, ca[k] * wa, cb[k] * wb, cc[k] * wc);
   return ShadePath::Smooth;
 }
 

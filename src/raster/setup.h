@@ -21,6 +21,7 @@
 
 #include "fragment/fragment_ops.h"
 #include "geometry/vertex.h"
+#include "raster/raster.h"
 
 namespace pineda {
 
@@ -49,6 +50,39 @@ inline SnappedTri snap_triangle(const PVertex& a, const PVertex& b, const PVerte
           {to_fixed(a.win[1]), to_fixed(b.win[1]), to_fixed(c.win[1])}};
 }
 
+// Bands::owns and Bands::owns_any (workers.h) with a mask instead of a division when the
+// thread count is a power of two: the triangle path asks once or twice per triangle.
+inline bool band_owned(const Bands& b, unsigned band) {
+  const auto n = static_cast<unsigned>(b.count), i = static_cast<unsigned>(b.index);
+  return ((n & (n - 1)) == 0 ? (band & (n - 1)) : band % n) == i;
+}
+inline bool bands_own(const Bands& b, int y) {
+  return b.count == 1 || band_owned(b, static_cast<unsigned>(y >> kBandShift));
+}
+inline bool bands_own_rows(const Bands& b, int y0, int y1) {
+  if (b.count == 1) return true;
+  y0 = y0 > 0 ? y0 : 0;
+  if (y1 < y0) return false;
+  const auto b0 = static_cast<unsigned>(y0 >> kBandShift),
+             b1 = static_cast<unsigned>(y1 >> kBandShift);
+  if (b1 - b0 + 1 >= static_cast<unsigned>(b.count)) return true;
+  for (unsigned band = b0; band <= b1; ++band)
+    if (band_owned(b, band)) return true;
+  return false;
+}
+
+// Twice the signed area of a snapped triangle, as fixed_area2 (raster.h) computes it.
+inline int64_t snapped_area2(const SnappedTri& t) {
+  const int64_t x0 = t.x[0], y0 = t.y[0];
+  return (t.x[1] - x0) * (t.y[2] - y0) - (t.x[2] - x0) * (t.y[1] - y0);
+}
+
+// raster_triangle (raster.h) for a triangle whose snapped positions the caller has already
+// (primitive assembly snaps them for the facing test).
+void raster_triangle_snapped(const DrawCall& dc, const SnappedTri& t, const PVertex& a,
+                             const PVertex& b, const PVertex& c, const PVertex& provoking,
+                             bool back_facing);
+
 // Edge functions and bounding box, clipped to [cx0,cx1]x[cy0,cy1]. Either winding; returns
 // false for a zero-area triangle or one that covers no pixel centre of the clip rectangle.
 bool setup_edges(const SnappedTri& t, int cx0, int cy0, int cx1, int cy1, TriEdges& out);
@@ -59,8 +93,8 @@ struct PlaneSetup {
   double dx1 = 0, dy1 = 0; // second - first
   double dx2 = 0, dy2 = 0; // third - first
   double inv_det = 0;
-  int ox = 0, oy = 0;      // origin pixel of the planes (FragInputs::ox, oy)
-  double cx = 0, cy = 0;   // centre of the origin pixel minus the first vertex
+  int ox = 0, oy = 0;    // origin pixel of the planes (FragInputs::ox, oy)
+  double cx = 0, cy = 0; // centre of the origin pixel minus the first vertex
 };
 
 PlaneSetup make_plane_setup(const SnappedTri& t);
@@ -76,7 +110,8 @@ ShadePath setup_triangle_inputs(const FragCtx& ctx, const PlaneSetup& ps, const 
 
 // Constant colour of a primitive (points, flat shading) from an attribute slot.
 inline void const_color(const PVertex& v, int slot, uint8_t out[4]) {
-  for (int k = 0; k < 4; ++k) out[k] = color_to_unorm8(v.attr[slot + k]);
+  for (int k = 0; k < 4; ++k)
+    out[k] = color_to_unorm8(v.attr[slot + k]);
 }
 
 } // namespace pineda

@@ -170,6 +170,7 @@ bool make_sampler_view(const TextureObject& tex, SamplerView& out) {
   out.c = 0.0f;
   out.compare = b.is_depth && p.compare_mode == GL_COMPARE_R_TO_TEXTURE;
   out.compare_func = p.compare_func;
+  out.quads = quad_sampling_supported(out);
   return true;
 }
 

@@ -56,6 +56,7 @@ struct SamplerView {
   float c = 0.0f;        // §3.8.9: the minification/magnification switch-over point
   bool compare = false;  // TEXTURE_COMPARE_MODE == COMPARE_R_TO_TEXTURE
   GLenum compare_func = GL_LEQUAL;
+  bool quads = false; // sample_quads has a vector path for this view (quad_sampling_supported)
 };
 
 // Snapshot of `tex` for one draw; false when `tex` is not complete (§3.8.10), in which case the
@@ -74,6 +75,18 @@ bool make_sampler_view(const TextureObject& tex, SamplerView& out);
 // `t` may be null for 1D textures and `r` for 1D/2D ones.
 void sample_texture(const SamplerView& v, int n, const float* s, const float* t, const float* r,
                     const float* lambda, float bias, float (*rgba)[4]);
+
+// Whether sample_quads filters `v` in vectors (2D colour texture, LINEAR minification,
+// CLAMP_TO_EDGE or power-of-two REPEAT wraps); make_sampler_view records it in `quads`.
+bool quad_sampling_supported(const SamplerView& v);
+
+// Samples nq 2x2 quads: s[4q + k], t[4q + k] are the coordinates (already divided by q) of
+// fragment k of quad q, lambda[q] the quad's log2 rho as for sample_texture, `bias` the unit's
+// TEXTURE_LOD_BIAS. Writes rgba[c][4q + k], channel c of fragment k, exactly the values
+// sample_texture gives with lambda[q] for each of the quad's fragments. Any 2D view works;
+// those without `quads` take sample_texture's path.
+void sample_quads(const SamplerView& v, int nq, const float* s, const float* t, const float* lambda,
+                  float bias, float (*rgba)[64]);
 
 // The object bound to `target` (GL_TEXTURE_1D/2D/3D/CUBE_MAP) of texture unit `unit` (default
 // object when 0 is bound); never null.

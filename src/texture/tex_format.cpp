@@ -32,9 +32,11 @@ uint8_t quantize(float x, int bits) {
   const int stored = std::min(bits, 8);
   if (stored <= 0) return 0;
   const float max = float((1 << stored) - 1);
-  const int v = int(std::lround(x * max));
+  // Round half up of a non-negative float, as lround: the sum is exact in double.
+  const auto round = [](float v) { return int(double(v) + 0.5); };
+  const int v = round(x * max);
   if (stored == 8) return uint8_t(v);
-  return uint8_t(std::lround(float(v) * 255.0f / max));
+  return uint8_t(round(float(v) * 255.0f / max));
 }
 
 } // namespace

@@ -38,8 +38,36 @@ PixelStore store_for(const PixelStore& st, int dims) {
 // Unpacks a w x h x d client image into the region of `im` at border-relative (x, y, z), one
 // image slice at a time, with the pixel transfer operations (§3.8.1: as DrawPixels, up to the
 // final expansion to RGBA). May throw std::bad_alloc.
+// RGBA unsigned bytes into an image of 8-bit RGBA texels with no pixel transfer operation on:
+// each component c goes to c / 255 (Table 2.9) and back to round(c / 255 * 255) = c (checked
+// for all 256 values in float), so the rows are copied as they are.
+bool copy_rgba8(const Context* ctx, TexImage& im, int dims, int x, int y, int z, int w, int h,
+                int d, GLenum format, GLenum type, const void* pixels) {
+  if (im.is_depth || format != GL_RGBA || type != GL_UNSIGNED_BYTE || im.base != TexBase::RGBA ||
+      im.red_size != 8 || im.green_size != 8 || im.blue_size != 8 || im.alpha_size != 8 ||
+      rgba_transfer_active(ctx->pixel_transfer))
+    return false;
+  PixelStore st = store_for(ctx->unpack, dims);
+  const int skip = st.skip_images;
+  const int bi = im.border, bj = dims >= 2 ? im.border : 0, bk = dims >= 3 ? im.border : 0;
+  const uint8_t* src = static_cast<const uint8_t*>(pixels);
+  for (int k = 0; k < d; ++k) {
+    st.skip_images = skip + k;
+    ClientLayout l;
+    if (!client_layout(w, h, format, type, st, l)) return false;
+    for (int j = 0; j < h; ++j) {
+      const size_t idx =
+          (size_t(z + k + bk) * size_t(im.height) + size_t(y + j + bj)) * size_t(im.width) +
+          size_t(x + bi);
+      std::memcpy(&im.rgba[idx * 4], src + l.row_offset(j, 0), size_t(w) * 4);
+    }
+  }
+  return true;
+}
+
 void unpack_into(const Context* ctx, TexImage& im, int dims, int x, int y, int z, int w, int h,
                  int d, GLenum format, GLenum type, const void* pixels) {
+  if (copy_rgba8(ctx, im, dims, x, y, z, w, h, d, format, type, pixels)) return;
   PixelStore st = store_for(ctx->unpack, dims);
   std::vector<float> tmp(size_t(w) * size_t(h) * (im.is_depth ? 1 : 4));
   const int skip = st.skip_images;

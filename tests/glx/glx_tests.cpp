@@ -40,7 +40,8 @@ protected:
   void TearDown() override {
     if (dpy == nullptr) return;
     glXMakeCurrent(dpy, None, nullptr);
-    for (Window w : windows) XDestroyWindow(dpy, w);
+    for (Window w : windows)
+      XDestroyWindow(dpy, w);
     XCloseDisplay(dpy);
   }
 
@@ -65,13 +66,15 @@ protected:
     XSetWindowAttributes swa{};
     swa.colormap = XCreateColormap(dpy, root, vi->visual, AllocNone);
     swa.event_mask = StructureNotifyMask;
-    Window win = XCreateWindow(dpy, root, 0, 0, static_cast<unsigned>(w),
-                               static_cast<unsigned>(h), 0, vi->depth, InputOutput, vi->visual,
-                               CWColormap | CWEventMask, &swa);
+    Window win =
+        XCreateWindow(dpy, root, 0, 0, static_cast<unsigned>(w), static_cast<unsigned>(h), 0,
+                      vi->depth, InputOutput, vi->visual, CWColormap | CWEventMask, &swa);
     XFree(vi);
     XMapWindow(dpy, win);
     XEvent ev;
-    do XNextEvent(dpy, &ev); while (ev.type != MapNotify);
+    do
+      XNextEvent(dpy, &ev);
+    while (ev.type != MapNotify);
     windows.push_back(win);
     return win;
   }
@@ -125,8 +128,7 @@ TEST_F(Glx, ConfigsAndSorting) {
   EXPECT_EQ(attrib(all[0], GLX_DEPTH_SIZE), 24);
   EXPECT_EQ(attrib(all[0], GLX_STENCIL_SIZE), 8);
   EXPECT_EQ(attrib(all[0], GLX_RENDER_TYPE) & GLX_RGBA_BIT, GLX_RGBA_BIT);
-  EXPECT_EQ(attrib(all[0], GLX_DRAWABLE_TYPE),
-            GLX_WINDOW_BIT | GLX_PIXMAP_BIT | GLX_PBUFFER_BIT);
+  EXPECT_EQ(attrib(all[0], GLX_DRAWABLE_TYPE), GLX_WINDOW_BIT | GLX_PIXMAP_BIT | GLX_PBUFFER_BIT);
   EXPECT_EQ(attrib(all[0], GLX_X_VISUAL_TYPE), GLX_TRUE_COLOR);
   EXPECT_EQ(attrib(all[0], GLX_ACCUM_RED_SIZE), 0);
   int v = 0;
@@ -135,8 +137,8 @@ TEST_F(Glx, ConfigsAndSorting) {
 
   // What waffle asks for: the first match has everything requested.
   GLXFBConfig c = choose({GLX_RENDER_TYPE, GLX_RGBA_BIT, GLX_DOUBLEBUFFER, True, GLX_RED_SIZE, 8,
-                          GLX_GREEN_SIZE, 8, GLX_BLUE_SIZE, 8, GLX_ALPHA_SIZE, 8,
-                          GLX_DEPTH_SIZE, 24, GLX_STENCIL_SIZE, 8});
+                          GLX_GREEN_SIZE, 8, GLX_BLUE_SIZE, 8, GLX_ALPHA_SIZE, 8, GLX_DEPTH_SIZE,
+                          24, GLX_STENCIL_SIZE, 8});
   ASSERT_NE(c, nullptr);
   EXPECT_EQ(attrib(c, GLX_DOUBLEBUFFER), True);
   EXPECT_EQ(attrib(c, GLX_ALPHA_SIZE), 8);
@@ -262,6 +264,46 @@ void clear_to(float r, float g, float b) {
 void fill_rect(float r, float g, float b, int x0, int y0, int x1, int y1, int w, int h) {
   glColor3f(r, g, b);
   glRectf(2.0f * x0 / w - 1, 2.0f * y0 / h - 1, 2.0f * x1 / w - 1, 2.0f * y1 / h - 1);
+}
+
+// Swaps of a double-buffered window under MIT-SHM alternate two images and do not wait for the
+// server (glx_drawable.cpp swap_images): each swap must still show its own frame, and the back
+// buffer must keep its contents, so a frame that redraws only part of the window shows the rest
+// of the previous one. Run with and without MIT-SHM (glx.api and glx.api_no_shm).
+TEST_F(Glx, ConsecutiveSwapsShowEachFrameAndKeepTheBackBuffer) {
+  GLXFBConfig c = choose({GLX_DOUBLEBUFFER, True});
+  ASSERT_NE(c, nullptr);
+  const int w = 40, h = 30;
+  Window win = make_window(c, w, h);
+  GLXContext ctx = glXCreateNewContext(dpy, c, GLX_RGBA_TYPE, nullptr, True);
+  ASSERT_NE(ctx, nullptr);
+  ASSERT_TRUE(glXMakeCurrent(dpy, win, ctx));
+  glXSwapIntervalEXT(dpy, win, 0);
+  const float colours[4][3] = {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}, {1, 1, 0}};
+  const unsigned long expect[4] = {0xff0000ul, 0x00ff00ul, 0x0000fful, 0xffff00ul};
+  for (int frame = 0; frame < 8; ++frame) {
+    const int k = frame % 4;
+    clear_to(colours[k][0], colours[k][1], colours[k][2]);
+    glXSwapBuffers(dpy, win);
+    EXPECT_EQ(x_pixel(win, 5, 5), expect[k]) << "frame " << frame;
+    EXPECT_EQ(gl_pixel(5, 5), expect[k]) << "back buffer after swap " << frame;
+  }
+  // Partial redraws over the kept back buffer: each adds one column of 10 pixels.
+  clear_to(0, 0, 0);
+  for (int frame = 0; frame < 4; ++frame) {
+    fill_rect(colours[frame][0], colours[frame][1], colours[frame][2], 10 * frame, 0,
+              10 * frame + 10, h, w, h);
+    glXSwapBuffers(dpy, win);
+    for (int col = 0; col <= frame; ++col) {
+      EXPECT_EQ(x_pixel(win, 10 * col + 5, 15), expect[col]) << "frame " << frame;
+    }
+    if (frame < 3) {
+      EXPECT_EQ(x_pixel(win, 35, 15), 0ul) << "frame " << frame;
+    }
+  }
+  ASSERT_TRUE(glXMakeCurrent(dpy, None, nullptr));
+  glXDestroyContext(dpy, ctx);
+  EXPECT_EQ(g_error_count, 0);
 }
 
 // GL 2.1 §4.2.1, §4.3.2, GLX 1.4 §3.3.10: a double-buffered window has a front and a back
@@ -510,8 +552,8 @@ TEST_F(Glx, Pixmap) {
   ASSERT_NE(c, nullptr);
   XVisualInfo* vi = glXGetVisualFromFBConfig(dpy, c);
   ASSERT_NE(vi, nullptr);
-  Pixmap pm = XCreatePixmap(dpy, RootWindow(dpy, vi->screen), 64, 48,
-                            static_cast<unsigned>(vi->depth));
+  Pixmap pm =
+      XCreatePixmap(dpy, RootWindow(dpy, vi->screen), 64, 48, static_cast<unsigned>(vi->depth));
   XFree(vi);
   // X draws first: a green square that GL must see after binding (GLX 1.4 §3.3.9).
   GC gc = XCreateGC(dpy, pm, 0, nullptr);
@@ -548,8 +590,8 @@ TEST_F(Glx, GlxPixmapFromVisual) {
   int attribs[] = {GLX_RGBA, GLX_RED_SIZE, 8, None};
   XVisualInfo* vi = glXChooseVisual(dpy, DefaultScreen(dpy), attribs);
   ASSERT_NE(vi, nullptr);
-  Pixmap pm = XCreatePixmap(dpy, RootWindow(dpy, vi->screen), 32, 32,
-                            static_cast<unsigned>(vi->depth));
+  Pixmap pm =
+      XCreatePixmap(dpy, RootWindow(dpy, vi->screen), 32, 32, static_cast<unsigned>(vi->depth));
   GLXPixmap gp = glXCreateGLXPixmap(dpy, vi, pm);
   GLXContext ctx = glXCreateContext(dpy, vi, nullptr, True);
   ASSERT_NE(ctx, nullptr);
@@ -634,8 +676,13 @@ TEST_F(Glx, CreateContextAttribs) {
   EXPECT_EQ(g_error_count, 0);
   glXDestroyContext(dpy, ctx);
   // Beyond what glGetString(GL_VERSION) claims: GLXBadFBConfig.
-  const int v33[] = {GLX_CONTEXT_MAJOR_VERSION_ARB, 3, GLX_CONTEXT_MINOR_VERSION_ARB, 3,
-                     GLX_CONTEXT_PROFILE_MASK_ARB, GLX_CONTEXT_CORE_PROFILE_BIT_ARB, None};
+  const int v33[] = {GLX_CONTEXT_MAJOR_VERSION_ARB,
+                     3,
+                     GLX_CONTEXT_MINOR_VERSION_ARB,
+                     3,
+                     GLX_CONTEXT_PROFILE_MASK_ARB,
+                     GLX_CONTEXT_CORE_PROFILE_BIT_ARB,
+                     None};
   EXPECT_EQ(glXCreateContextAttribsARB(dpy, c, nullptr, True, v33), nullptr);
   XSync(dpy, False);
   EXPECT_EQ(g_error_count, 1);

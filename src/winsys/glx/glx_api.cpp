@@ -277,11 +277,16 @@ GLXContext create_context(DisplayState* ds, const Config* c, GLXContext share, i
 // GLX_ARB_create_context: the OpenGL versions that exist.
 bool version_defined(int major, int minor) {
   switch (major) {
-  case 1: return minor >= 0 && minor <= 5;
-  case 2: return minor >= 0 && minor <= 1;
-  case 3: return minor >= 0 && minor <= 3;
-  case 4: return minor >= 0 && minor <= 6;
-  default: return false;
+  case 1:
+    return minor >= 0 && minor <= 5;
+  case 2:
+    return minor >= 0 && minor <= 1;
+  case 3:
+    return minor >= 0 && minor <= 3;
+  case 4:
+    return minor >= 0 && minor <= 6;
+  default:
+    return false;
   }
 }
 
@@ -321,10 +326,14 @@ GLX_EXPORT const char* glXQueryExtensionsString(Display* dpy, int screen) {
 
 GLX_EXPORT const char* glXGetClientString(Display* /*dpy*/, int name) {
   switch (name) {
-  case GLX_VENDOR: return kVendor;
-  case GLX_VERSION: return kVersion;
-  case GLX_EXTENSIONS: return kExtensions;
-  default: return nullptr;
+  case GLX_VENDOR:
+    return kVendor;
+  case GLX_VERSION:
+    return kVersion;
+  case GLX_EXTENSIONS:
+    return kExtensions;
+  default:
+    return nullptr;
   }
 }
 
@@ -379,12 +388,24 @@ GLX_EXPORT GLXContext glXCreateContextAttribsARB(Display* dpy, GLXFBConfig confi
   for (int i = 0; attribList != nullptr && attribList[i] != None; i += 2) {
     const int v = attribList[i + 1];
     switch (attribList[i]) {
-    case GLX_CONTEXT_MAJOR_VERSION_ARB: major = v; break;
-    case GLX_CONTEXT_MINOR_VERSION_ARB: minor = v; break;
-    case GLX_CONTEXT_FLAGS_ARB: flags = v; break;
-    case GLX_CONTEXT_PROFILE_MASK_ARB: profile = v; break;
-    case GLX_RENDER_TYPE: render_type = v; break;
-    default: report_error(ds, -1, BadValue, 0, req); return nullptr;
+    case GLX_CONTEXT_MAJOR_VERSION_ARB:
+      major = v;
+      break;
+    case GLX_CONTEXT_MINOR_VERSION_ARB:
+      minor = v;
+      break;
+    case GLX_CONTEXT_FLAGS_ARB:
+      flags = v;
+      break;
+    case GLX_CONTEXT_PROFILE_MASK_ARB:
+      profile = v;
+      break;
+    case GLX_RENDER_TYPE:
+      render_type = v;
+      break;
+    default:
+      report_error(ds, -1, BadValue, 0, req);
+      return nullptr;
     }
   }
   const int known_flags = GLX_CONTEXT_DEBUG_BIT_ARB | GLX_CONTEXT_FORWARD_COMPATIBLE_BIT_ARB;
@@ -485,7 +506,9 @@ GLX_EXPORT GLXDrawable glXGetCurrentReadDrawable(void) {
   return c != nullptr ? c->read_id : None;
 }
 
-GLX_EXPORT Display* glXGetCurrentDisplay(void) { return current_glx() != nullptr ? t_dpy : nullptr; }
+GLX_EXPORT Display* glXGetCurrentDisplay(void) {
+  return current_glx() != nullptr ? t_dpy : nullptr;
+}
 
 GLX_EXPORT Bool glXIsDirect(Display* dpy, GLXContext ctx) {
   ApiLock api;
@@ -508,10 +531,17 @@ GLX_EXPORT int glXQueryContext(Display* dpy, GLXContext ctx, int attribute, int*
   }
   int v = 0;
   switch (attribute) {
-  case GLX_FBCONFIG_ID: v = c->config->id; break;
-  case GLX_RENDER_TYPE: v = c->render_type; break;
-  case GLX_SCREEN: v = c->config->screen; break;
-  default: return GLX_BAD_ATTRIBUTE;
+  case GLX_FBCONFIG_ID:
+    v = c->config->id;
+    break;
+  case GLX_RENDER_TYPE:
+    v = c->render_type;
+    break;
+  case GLX_SCREEN:
+    v = c->config->screen;
+    break;
+  default:
+    return GLX_BAD_ATTRIBUTE;
   }
   if (value != nullptr) *value = v;
   return Success;
@@ -539,17 +569,20 @@ GLX_EXPORT void glXSwapBuffers(Display* dpy, GLXDrawable drawable) {
     // (its contents are undefined after the swap). Skipped while no context uses the front
     // buffer: the window then holds it, fetched when a context selects it.
     bool front_used = false;
-    for (GlxContext* c : s->bound) front_used = front_used || uses_front(*c);
+    for (GlxContext* c : s->bound)
+      front_used = front_used || uses_front(*c);
     if (front_used && !s->front.empty()) {
       std::memcpy(s->front.data(), s->image->data, s->front.size());
       s->front_stale = false;
     } else {
       s->front_stale = true;
     }
-    present(*s);
-    // The window may have been resized: the next frame renders at its new size (the back
-    // buffer's contents are undefined after a swap, so nothing is lost).
-    refresh_size(*s);
+    if (!swap_images(*s)) {
+      present(*s);
+      // The window may have been resized: the next frame renders at its new size (the back
+      // buffer's contents are undefined after a swap, so nothing is lost).
+      refresh_size(*s);
+    }
   } else if (presents_on_flush(*s)) {
     present(*s);
   }
@@ -593,7 +626,8 @@ struct GlxProc {
   const char* name;
   __GLXextFuncPtr proc;
 };
-#define PINEDA_GLX_PROC(f) {#f, reinterpret_cast<__GLXextFuncPtr>(&f)}
+#define PINEDA_GLX_PROC(f)                                                                         \
+  { #f, reinterpret_cast < __GLXextFuncPtr>(&f) }
 const GlxProc kGlxProcs[] = {
     PINEDA_GLX_PROC(glXChooseFBConfig),
     PINEDA_GLX_PROC(glXChooseVisual),

@@ -2,6 +2,7 @@
 // GLXPbuffers, the buffers Pineda renders into for them, and their attributes.
 #include <algorithm>
 #include <cstdlib>
+#include <cstring>
 #include <new>
 
 #include "state/draw_read_buffer.h"
@@ -32,7 +33,8 @@ bool geometry(Display* dpy, Drawable d, int* w, int* h, int* depth, int* screen_
   int x = 0, y = 0;
   unsigned int uw = 0, uh = 0, border = 0, udepth = 0;
   Status ok = 0;
-  const int err = trap_errors(dpy, [&] { ok = XGetGeometry(dpy, d, &root, &x, &y, &uw, &uh, &border, &udepth); });
+  const int err = trap_reply_errors(
+      [&] { ok = XGetGeometry(dpy, d, &root, &x, &y, &uw, &uh, &border, &udepth); });
   if (err != 0 || !ok) return false;
   *w = static_cast<int>(uw);
   *h = static_cast<int>(uh);
@@ -88,11 +90,15 @@ void destroy_surface(DisplayState* ds, XID id, SurfaceKind kind, int glx_error, 
   ds->surfaces.erase(it);
 }
 
-bool attribs_empty(const int* list) { return list == nullptr || list[0] == None; }
+bool attribs_empty(const int* list) {
+  return list == nullptr || list[0] == None;
+}
 
 } // namespace
 
-Surface::~Surface() { orphan_surface(*this); }
+Surface::~Surface() {
+  orphan_surface(*this);
+}
 
 void orphan_surface(Surface& s) {
   if (s.ds == nullptr) return;
@@ -135,8 +141,8 @@ bool allocate_buffers(Surface& s, int width, int height) {
       }
       // A resize leaves the front buffer undefined: it is again what the window shows.
       if (has_back_buffer(s))
-        s.front.assign(
-            static_cast<size_t>(s.image->bytes_per_line) * static_cast<size_t>(height), 0);
+        s.front.assign(static_cast<size_t>(s.image->bytes_per_line) * static_cast<size_t>(height),
+                       0);
       s.front_stale = true;
     }
     s.depth.assign(s.config->depth_bits > 0 ? pixels : 0, 0);
@@ -159,7 +165,36 @@ bool refresh_size(Surface& s) {
   if (!allocate_buffers(s, w, h)) return false;
   // Every context drawing here sees the new buffers (a resize while another thread renders
   // into the same drawable is not synchronised).
-  for (GlxContext* ctx : s.bound) attach(ctx, s);
+  for (GlxContext* ctx : s.bound)
+    attach(ctx, s);
+  return true;
+}
+
+bool swap_images(Surface& s) {
+  if (s.kind != SurfaceKind::Window || !s.shm || s.spare == nullptr || s.ds == nullptr)
+    return false;
+  Display* dpy = s.ds->dpy;
+  int w = 0, h = 0;
+  // One round trip per swap. Its reply also tells that the server has finished reading the
+  // spare image, sent by the previous swap: requests are processed in order.
+  if (!geometry(dpy, s.x_drawable, &w, &h, nullptr, nullptr)) return false;
+  present_async(s);
+  if (w != s.width || h != s.height) {
+    // The image just sent must outlive the server's read of it.
+    XSync(dpy, False);
+    if (!allocate_buffers(s, w, h)) return true;
+    for (GlxContext* ctx : s.bound)
+      attach(ctx, s);
+    return true;
+  }
+  // GLX 1.4 §3.3.10 leaves the back buffer undefined after a swap; it is kept as it was, as
+  // Mesa does, for programs that redraw only part of each frame. Both copies read the image
+  // the server is reading.
+  const size_t bytes = static_cast<size_t>(s.image->bytes_per_line) * static_cast<size_t>(s.height);
+  std::memcpy(s.spare->data, s.image->data, bytes);
+  std::swap(s.image, s.spare);
+  for (GlxContext* ctx : s.bound)
+    attach(ctx, s);
   return true;
 }
 
@@ -175,7 +210,8 @@ void attach(GlxContext* ctx, Surface& s) {
   } else {
     // X images are stored top row first; GL's row 0 is the bottom one.
     const ptrdiff_t row = s.image->bytes_per_line;
-    fb.color = reinterpret_cast<uint8_t*>(s.image->data) + (s.height > 0 ? (s.height - 1) * row : 0);
+    fb.color =
+        reinterpret_cast<uint8_t*>(s.image->data) + (s.height > 0 ? (s.height - 1) * row : 0);
     fb.color_stride = -row;
   }
   fb.depth_bits = s.config->depth_bits;
@@ -327,11 +363,21 @@ GLX_EXPORT GLXPbuffer glXCreatePbuffer(Display* dpy, GLXFBConfig config, const i
   for (int i = 0; attribList != nullptr && attribList[i] != None; i += 2) {
     const int v = attribList[i + 1];
     switch (attribList[i]) {
-    case GLX_PBUFFER_WIDTH: w = v; break;
-    case GLX_PBUFFER_HEIGHT: h = v; break;
-    case GLX_PRESERVED_CONTENTS: preserved = v != False; break;
-    case GLX_LARGEST_PBUFFER: largest = v != False; break;
-    default: report_error(ds, -1, BadValue, 0, kReqCreatePbuffer); return None;
+    case GLX_PBUFFER_WIDTH:
+      w = v;
+      break;
+    case GLX_PBUFFER_HEIGHT:
+      h = v;
+      break;
+    case GLX_PRESERVED_CONTENTS:
+      preserved = v != False;
+      break;
+    case GLX_LARGEST_PBUFFER:
+      largest = v != False;
+      break;
+    default:
+      report_error(ds, -1, BadValue, 0, kReqCreatePbuffer);
+      return None;
     }
   }
   if (w < 0 || h < 0) {
@@ -385,13 +431,27 @@ GLX_EXPORT void glXQueryDrawable(Display* dpy, GLXDrawable draw, int attribute,
     refresh_size(*s);
     v = static_cast<unsigned>(attribute == GLX_WIDTH ? s->width : s->height);
     break;
-  case GLX_PRESERVED_CONTENTS: v = s->preserved ? True : False; break;
-  case GLX_LARGEST_PBUFFER: v = s->largest ? True : False; break;
-  case GLX_FBCONFIG_ID: v = static_cast<unsigned>(s->config->id); break;
-  case GLX_EVENT_MASK: v = static_cast<unsigned>(s->event_mask); break;
-  case GLX_SWAP_INTERVAL_EXT: v = static_cast<unsigned>(s->swap_interval); break;
-  case GLX_MAX_SWAP_INTERVAL_EXT: v = kMaxSwapInterval; break;
-  default: report_error(ds, -1, BadValue, draw, kReqGetDrawableAttributes); return;
+  case GLX_PRESERVED_CONTENTS:
+    v = s->preserved ? True : False;
+    break;
+  case GLX_LARGEST_PBUFFER:
+    v = s->largest ? True : False;
+    break;
+  case GLX_FBCONFIG_ID:
+    v = static_cast<unsigned>(s->config->id);
+    break;
+  case GLX_EVENT_MASK:
+    v = static_cast<unsigned>(s->event_mask);
+    break;
+  case GLX_SWAP_INTERVAL_EXT:
+    v = static_cast<unsigned>(s->swap_interval);
+    break;
+  case GLX_MAX_SWAP_INTERVAL_EXT:
+    v = kMaxSwapInterval;
+    break;
+  default:
+    report_error(ds, -1, BadValue, draw, kReqGetDrawableAttributes);
+    return;
   }
   if (value != nullptr) *value = v;
 }

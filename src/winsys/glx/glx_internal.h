@@ -26,11 +26,11 @@ namespace pineda::glx {
 // One GLXFBConfig (GLX 1.4 §3.3.3, Table 3.1). Every config is RGBA, renders to windows,
 // pixmaps and pbuffers, and is tied to one TrueColor visual.
 struct Config {
-  int id = 0;                 // GLX_FBCONFIG_ID
+  int id = 0; // GLX_FBCONFIG_ID
   int screen = 0;
   Visual* visual = nullptr;
   VisualID visual_id = 0;
-  int visual_depth = 0;       // 24 or 32
+  int visual_depth = 0; // 24 or 32
   ColorFormat format = ColorFormat::BGRA8;
   unsigned long rgb_mask = 0; // the visual's red|green|blue bits inside a 32-bit pixel
   bool double_buffer = false;
@@ -69,13 +69,20 @@ struct Surface {
   XID id = 0;          // the GLXDrawable applications name it by
   Drawable x_drawable; // the X window or pixmap; 0 for a pbuffer
   const Config* config = nullptr;
-  bool implicit = false;   // an X window used directly with glXMakeCurrent
+  bool implicit = false; // an X window used directly with glXMakeCurrent
   int width = 0, height = 0;
 
   // Colour: an XImage in the visual's format (windows and pixmaps) or plain memory (pbuffers).
   XImage* image = nullptr;
   XShmSegmentInfo shm_info{};
   bool shm = false;
+  // A double-buffered window presenting through MIT-SHM has a second image: a swap sends the
+  // back image to the server without waiting and renders on into this one, so the server's
+  // copy overlaps the next frame (swap_images in glx_drawable.cpp). Null without MIT-SHM.
+  // Each image keeps pointing at the segment field it was created with (`shm_info` or
+  // `spare_info`), whichever of `image` and `spare` it is at the moment.
+  XImage* spare = nullptr;
+  XShmSegmentInfo spare_info{};
   std::vector<uint8_t> memory;
   // The front colour buffer of a double-buffered window (GLX 1.4 §3.3.10), rows laid out as
   // in `image`, which is the back buffer. While `front_stale`, the front buffer's contents are
@@ -186,6 +193,14 @@ template <typename F> int trap_errors(Display* dpy, F&& body) {
   body();
   return trap_end(dpy);
 }
+// The same for a body whose last request waits for its reply: the server has processed every
+// earlier request by then, so their errors have arrived and no XSync round trip is needed.
+int trap_end_replied();
+template <typename F> int trap_reply_errors(F&& body) {
+  trap_begin();
+  body();
+  return trap_end_replied();
+}
 
 // A fresh XID from the client's resource range, for GLX drawables and contexts.
 XID alloc_xid(Display* dpy);
@@ -199,6 +214,10 @@ void orphan_surface(Surface& s);
 bool allocate_buffers(Surface& s, int width, int height);
 // Re-read the size of a window or pixmap and resize; false if the drawable is gone.
 bool refresh_size(Surface& s);
+// glXSwapBuffers of a double-buffered window with a spare image: presents without waiting
+// for the server and renders on into the spare. False if it cannot (no spare image, or the
+// window is gone); the caller then presents and waits.
+bool swap_images(Surface& s);
 // Describe the surface's buffers in a context's Framebuffer.
 void attach(GlxContext* ctx, Surface& s);
 // Whether GL renders into a back buffer of the surface (presented by glXSwapBuffers).
@@ -208,10 +227,11 @@ bool has_back_buffer(const Surface& s);
 void set_swap_interval(DisplayState* ds, GLXDrawable drawable, int interval);
 
 // Presentation (glx_present.cpp).
-void present(Surface& s);         // our colour buffer -> window or pixmap
-void pull_pixmap(Surface& s);     // pixmap contents -> our colour buffer (X rendering seen by GL)
-void present_front(Surface& s);   // a double-buffered window's front buffer -> window
-void pull_front(Surface& s);      // window contents -> a double-buffered window's front buffer
+void present(Surface& s);       // our colour buffer -> window or pixmap
+void present_async(Surface& s); // the same through MIT-SHM, without waiting for the server
+void pull_pixmap(Surface& s);   // pixmap contents -> our colour buffer (X rendering seen by GL)
+void present_front(Surface& s); // a double-buffered window's front buffer -> window
+void pull_front(Surface& s);    // window contents -> a double-buffered window's front buffer
 // Whether ctx draws into or reads the front buffer of its double-buffered window.
 bool uses_front(const GlxContext& ctx);
 bool draws_front(const GlxContext& ctx); // draws into it (shown at glFlush)

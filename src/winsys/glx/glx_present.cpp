@@ -38,13 +38,16 @@ thread_local PendingError t_pending;
 // Core error codes that stand in for GLX ones when the server has no GLX extension.
 int core_equivalent(int glx_code) {
   switch (glx_code) {
-  case GLXBadPixmap: return BadPixmap;
+  case GLXBadPixmap:
+    return BadPixmap;
   case GLXBadDrawable:
   case GLXBadCurrentWindow:
   case GLXBadCurrentDrawable:
   case GLXBadWindow:
-  case GLXBadPbuffer: return BadDrawable;
-  default: return BadValue;
+  case GLXBadPbuffer:
+    return BadDrawable;
+  default:
+    return BadValue;
   }
 }
 
@@ -59,6 +62,10 @@ int trap_begin() {
 
 int trap_end(Display* dpy) {
   XSync(dpy, False);
+  return trap_end_replied();
+}
+
+int trap_end_replied() {
   XSetErrorHandler(g_saved_handler);
   const int code = g_trapped_code;
   trap_mutex().unlock();
@@ -105,56 +112,91 @@ XID alloc_xid(Display* dpy) {
 
 // ---- images ----
 
-bool shm_create(Surface& s, int width, int height) {
+namespace {
+
+// One MIT-SHM image of the surface's visual; false (nothing allocated) if any step fails.
+bool shm_image(Surface& s, int width, int height, XImage*& out, XShmSegmentInfo& info) {
   Display* dpy = s.ds->dpy;
   const Config& c = *s.config;
-  XImage* img = XShmCreateImage(dpy, c.visual, static_cast<unsigned>(c.visual_depth), ZPixmap,
-                                nullptr, &s.shm_info, static_cast<unsigned>(width),
-                                static_cast<unsigned>(height));
+  XImage* img =
+      XShmCreateImage(dpy, c.visual, static_cast<unsigned>(c.visual_depth), ZPixmap, nullptr, &info,
+                      static_cast<unsigned>(width), static_cast<unsigned>(height));
   if (img == nullptr) return false;
   if (img->bits_per_pixel != 32) {
     XDestroyImage(img);
     return false;
   }
   const size_t bytes = static_cast<size_t>(img->bytes_per_line) * static_cast<size_t>(height);
-  s.shm_info.shmid = shmget(IPC_PRIVATE, bytes > 0 ? bytes : 1, IPC_CREAT | 0600);
-  if (s.shm_info.shmid < 0) {
+  info.shmid = shmget(IPC_PRIVATE, bytes > 0 ? bytes : 1, IPC_CREAT | 0600);
+  if (info.shmid < 0) {
     XDestroyImage(img);
     return false;
   }
-  s.shm_info.shmaddr = static_cast<char*>(shmat(s.shm_info.shmid, nullptr, 0));
-  if (s.shm_info.shmaddr == reinterpret_cast<char*>(-1)) {
-    shmctl(s.shm_info.shmid, IPC_RMID, nullptr);
+  info.shmaddr = static_cast<char*>(shmat(info.shmid, nullptr, 0));
+  if (info.shmaddr == reinterpret_cast<char*>(-1)) {
+    shmctl(info.shmid, IPC_RMID, nullptr);
     XDestroyImage(img);
     return false;
   }
-  img->data = s.shm_info.shmaddr;
-  s.shm_info.readOnly = False;
+  img->data = info.shmaddr;
+  info.readOnly = False;
   // Attaching fails asynchronously on a remote connection: wait for the verdict.
   Status attached = False;
-  const int err = trap_errors(dpy, [&] { attached = XShmAttach(dpy, &s.shm_info); });
+  const int err = trap_errors(dpy, [&] { attached = XShmAttach(dpy, &info); });
   // Marked for removal now: the segment disappears once both sides detach, even on a crash.
-  shmctl(s.shm_info.shmid, IPC_RMID, nullptr);
+  shmctl(info.shmid, IPC_RMID, nullptr);
   if (err != 0 || !attached) {
-    shmdt(s.shm_info.shmaddr);
+    shmdt(info.shmaddr);
     img->data = nullptr;
     XDestroyImage(img);
     return false;
   }
-  s.image = img;
+  out = img;
+  return true;
+}
+
+// The segment of an image of shm_image: XShmCreateImage keeps a pointer to the Surface field
+// it was created with, which stays with the image when swaps exchange `image` and `spare`.
+XShmSegmentInfo& segment(XImage* img) {
+  return *reinterpret_cast<XShmSegmentInfo*>(img->obdata);
+}
+
+// Frees an image of shm_image; the server has detached its segment.
+void shm_free(XImage*& img) {
+  if (img == nullptr) return;
+  shmdt(segment(img).shmaddr);
+  img->data = nullptr; // not malloc'd: XDestroyImage must not free it
+  XDestroyImage(img);
+  img = nullptr;
+}
+
+} // namespace
+
+bool shm_create(Surface& s, int width, int height) {
+  if (!shm_image(s, width, height, s.image, s.shm_info)) return false;
   s.shm = true;
+  // Without the spare image swaps still work, waiting for the server each time.
+  if (has_back_buffer(s) && !shm_image(s, width, height, s.spare, s.spare_info)) s.spare = nullptr;
   return true;
 }
 
 void shm_destroy(Surface& s) {
   if (!s.shm || s.image == nullptr) return;
-  XShmDetach(s.ds->dpy, &s.shm_info);
-  XSync(s.ds->dpy, False);
-  shmdt(s.shm_info.shmaddr);
-  s.image->data = nullptr; // not malloc'd: XDestroyImage must not free it
-  XDestroyImage(s.image);
-  s.image = nullptr;
+  Display* dpy = s.ds->dpy;
+  XShmDetach(dpy, &segment(s.image));
+  if (s.spare != nullptr) XShmDetach(dpy, &segment(s.spare));
+  XSync(dpy, False);
+  shm_free(s.spare);
+  shm_free(s.image);
   s.shm = false;
+}
+
+void present_async(Surface& s) {
+  Display* dpy = s.ds->dpy;
+  if (s.gc == nullptr) s.gc = XCreateGC(dpy, s.x_drawable, 0, nullptr);
+  XShmPutImage(dpy, s.x_drawable, s.gc, s.image, 0, 0, 0, 0, static_cast<unsigned>(s.width),
+               static_cast<unsigned>(s.height), False);
+  XFlush(dpy);
 }
 
 void present(Surface& s) {
@@ -180,9 +222,9 @@ void present_front(Surface& s) {
   const Config& c = *s.config;
   const auto w = static_cast<unsigned>(s.width), h = static_cast<unsigned>(s.height);
   // An image header over the front buffer's memory, which has the back image's layout.
-  XImage* img = XCreateImage(dpy, c.visual, static_cast<unsigned>(c.visual_depth), ZPixmap, 0,
-                             reinterpret_cast<char*>(s.front.data()), w, h, 32,
-                             s.image->bytes_per_line);
+  XImage* img =
+      XCreateImage(dpy, c.visual, static_cast<unsigned>(c.visual_depth), ZPixmap, 0,
+                   reinterpret_cast<char*>(s.front.data()), w, h, 32, s.image->bytes_per_line);
   if (img == nullptr) return;
   trap_errors(dpy, [&] {
     if (s.gc == nullptr) s.gc = XCreateGC(dpy, s.x_drawable, 0, nullptr);
@@ -218,7 +260,8 @@ void pull_into(Surface& s, uint8_t* dst_base) {
     for (int y = 0; y < s.height; ++y) {
       auto* dst = reinterpret_cast<uint32_t*>(dst_base + y * s.image->bytes_per_line);
       const auto* src = reinterpret_cast<const uint32_t*>(got->data + y * got->bytes_per_line);
-      for (int x = 0; x < s.width; ++x) dst[x] = (dst[x] & keep) | (src[x] & take);
+      for (int x = 0; x < s.width; ++x)
+        dst[x] = (dst[x] & keep) | (src[x] & take);
     }
   }
   XDestroyImage(got);

@@ -1,0 +1,26 @@
+// The per-vertex transform (GL 2.1 §2.11, §2.12) and lighting (§2.14.1) four vertices at a
+// time: the vertices are transposed into one vector per component (x of four vertices, y of
+// four, ...) and every operation of the scalar code (transform.cpp, clip.cpp clip_code,
+// raster.h to_window, light_eval.cpp light_vertex_faces) runs on four lanes in the same order,
+// so the results are the scalar ones bit for bit.
+#pragma once
+
+#include <cstddef>
+
+#include "core/context.h"
+#include "geometry/clip.h"
+#include "geometry/light_eval.h"
+#include "geometry/vertex.h"
+
+namespace pineda {
+
+// out[k].clip, clipmask and (for a zero clip code) win of in[k], k < n, under the column-major
+// composite matrix `m`.
+void transform_positions(const float* m, const ClipSetup& cs, const Viewport& vp,
+                         const InputVertex* in, PVertex* out, size_t n);
+
+// The lit colours of in[k] written to out[k].attr as light_vertex_faces writes them.
+void light_vertices(const LightSetup& s, const LitFaces& faces, const InputVertex* in, PVertex* out,
+                    size_t n);
+
+} // namespace pineda
