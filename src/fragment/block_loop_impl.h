@@ -723,10 +723,9 @@ void block_loop(const FragCtx& ctx, const FragInputs& in, int bx, int by, uint64
   // row that holds a fragment of `mask`, the only rows read below.
   [[maybe_unused]] alignas(32) float shaded_block[4][64];
   if constexpr (S == ShadePath::PerFragment) shade_block(ctx, in, bx, by, mask, shaded_block);
-  while (mask != 0) {
-    const int j = std::countr_zero(mask) >> 3;
-    unsigned m = static_cast<unsigned>(mask >> (8 * j)) & 0xffu;
-    mask &= ~(0xffull << (8 * j));
+  // One row: the tests, then colour and store for the survivors of `m`. `in_buffer`: the whole
+  // row lies inside the buffer (bx + 8 <= width).
+  const auto run_row = [&](int j, unsigned m, bool in_buffer) __attribute__((always_inline)) {
     const int y = by + j;
     const int di = bx - in.ox, dj = y - in.oy;
     Row s;
@@ -741,18 +740,18 @@ void block_loop(const FragCtx& ctx, const FragInputs& in, int bx, int by, uint64
           shade_row<P>(smooth, in, di, dj, s);
         shaded = true;
         m = alpha_row<P>(ctx, s, m);
-        if (m == 0) continue;
+        if (m == 0) return;
       }
       if (ctx.key.stencil_test) {
         m = stencil_depth_row<D>(ctx, in, bx, y, di, dj, m);
-        if (m == 0) continue;
+        if (m == 0) return;
       } else if constexpr (D != DepthPath::Off) {
         m = depth_row<D>(ctx, in, bx, y, di, dj, m);
-        if (m == 0) continue;
+        if (m == 0) return;
       }
     } else if constexpr (D != DepthPath::Off) {
       m = depth_row<D>(ctx, in, bx, y, di, dj, m);
-      if (m == 0) continue;
+      if (m == 0) return;
     }
     // §4.1.7: SAMPLES_PASSED counts what survived the stencil and depth tests.
     if constexpr (X)
@@ -769,10 +768,26 @@ void block_loop(const FragCtx& ctx, const FragInputs& in, int bx, int by, uint64
           shade_row<P>(smooth, in, di, dj, s);
       }
       if constexpr (L::bpp == 4)
-        write_row4<F, C, B, X>(ctx, row, m, bx + N <= ctx.fb_width, s);
+        write_row4<F, C, B, X>(ctx, row, m, in_buffer, s);
       else
         write_row3<C, B, X>(ctx, row, m, s);
     }
+  };
+  // A fully covered block (inside the buffer by construction): its rows in order, each with
+  // all eight fragments live, without the mask bookkeeping. The extended instances keep one
+  // copy of the row code.
+  if constexpr (!X) {
+    if (mask == ~uint64_t{0}) {
+      for (int j = 0; j < N; ++j)
+        run_row(j, 0xffu, true);
+      return;
+    }
+  }
+  while (mask != 0) {
+    const int j = std::countr_zero(mask) >> 3;
+    const unsigned m = static_cast<unsigned>(mask >> (8 * j)) & 0xffu;
+    mask &= ~(0xffull << (8 * j));
+    run_row(j, m, bx + N <= ctx.fb_width);
   }
 }
 

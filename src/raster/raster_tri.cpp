@@ -168,8 +168,11 @@ void traverse(const TriEdges& te, const FragCtx& ctx, const FragInputs& in, Bloc
         uint64_t mask;
         if (e[0] + accept_off[0] >= 0 && e[1] + accept_off[1] >= 0 && e[2] + accept_off[2] >= 0) {
           // Every centre of the block is inside; only the bounding box (which is clipped to
-          // the clip rectangle) limits it.
-          mask = rect_block_mask(te.minx, te.miny, te.maxx, te.maxy, bx, by);
+          // the clip rectangle) limits it, and not at all for a block inside the box.
+          const bool in_box =
+              bx >= te.minx && bx + (B - 1) <= te.maxx && by >= te.miny && by + (B - 1) <= te.maxy;
+          mask =
+              in_box ? ~uint64_t{0} : rect_block_mask(te.minx, te.miny, te.maxx, te.maxy, bx, by);
         } else if (e32.usable && std::abs(e[0]) < e32.limit[0] && std::abs(e[1]) < e32.limit[1] &&
                    std::abs(e[2]) < e32.limit[2]) {
           mask = partial_mask32(e32, e, r0, r1) &
