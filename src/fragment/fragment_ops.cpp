@@ -6,7 +6,7 @@
 #include "fragment/blend_simd.h"
 #include "fragment/shade.h"
 #include "fragment/simd.h"
-#include "fragment/simd_level.h"
+#include "core/simd_level.h"
 
 #include <algorithm>
 #include <array>
@@ -62,7 +62,7 @@ BlockFn select_block_fn_baseline(const StateKey& key, ShadePath shade) {
 }
 
 BlockFn select_block_fn(const StateKey& key, ShadePath shade) {
-#if PINEDA_HAVE_AVX2_BLOCKS
+#if PINEDA_HAVE_AVX2
   if (simd_level() == SimdLevel::Avx2) return select_block_fn_avx2(key, shade);
 #endif
   return select_from_tables(key, shade);

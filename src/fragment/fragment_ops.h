@@ -10,6 +10,7 @@
 #include <cstddef>
 #include <cstdint>
 
+#include "core/simd_level.h" // PINEDA_HAVE_AVX2: fragment_ops_avx2.cpp is built
 #include "fragment/blend.h"
 #include "fragment/per_fragment.h"
 #include "fragment/state_key.h"
@@ -44,20 +45,11 @@ struct FragInputs {
   PlaneF inv_w;
   PlaneF color_w[4];
   uint8_t const_color[4] = {0, 0, 0, 0}; // RGBA for ShadePath::Const
-  const ShadeInputs* shade = nullptr;     // planes for ShadePath::PerFragment
+  const ShadeInputs* shade = nullptr;    // planes for ShadePath::PerFragment
 };
 
-// Whether this build has the AVX2 instances of the block loops (fragment_ops_avx2.cpp), which
-// simd_level.h chooses at run time: x86-64 with GCC or Clang.
-#if defined(__x86_64__) && defined(__GNUC__)
-#define PINEDA_HAVE_AVX2_BLOCKS 1
-#else
-#define PINEDA_HAVE_AVX2_BLOCKS 0
-#endif
-
 struct FragCtx;
-using BlockFn = void (*)(const FragCtx& ctx, const FragInputs& in, int bx, int by,
-                         uint64_t mask);
+using BlockFn = void (*)(const FragCtx& ctx, const FragInputs& in, int bx, int by, uint64_t mask);
 
 // Everything the block loops read that is constant over a draw.
 struct FragCtx {
@@ -66,18 +58,18 @@ struct FragCtx {
   ptrdiff_t color_stride = 0;
   uint32_t* depth = nullptr;
   ptrdiff_t depth_stride = 0;
-  double depth_max = 0; // 2^bits - 1
-  uint8_t depth_func = 0;    // StateKey::depth_func, for the generic path
-  bool depth_write = false;  // for the generic path
-  uint32_t color_keep = 0;   // partial colour mask: bits of the stored pixel to keep
+  double depth_max = 0;     // 2^bits - 1
+  uint8_t depth_func = 0;   // StateKey::depth_func, for the generic path
+  bool depth_write = false; // for the generic path
+  uint32_t color_keep = 0;  // partial colour mask: bits of the stored pixel to keep
   BlendParams blend;
   bool blend_fixed = false; // blend_simd.h blend_params_fixed(blend): the 16-bit generic path
   // Values of the operations StateKey::ext() covers; read only by the extended instances.
-  uint8_t alpha_func = 0;      // depth_func_bits encoding (GL 2.1 §4.1.4)
-  uint8_t alpha_ref = 0;       // the reference as 8-bit fixed point (§2.14.9)
-  uint8_t* stencil = nullptr;  // row 0 at the bottom, stride fb_width
-  uint8_t stencil_func = 0;    // depth_func_bits encoding (§4.1.5)
-  uint8_t stencil_ref = 0;     // clamped to [0, 255]
+  uint8_t alpha_func = 0;     // depth_func_bits encoding (GL 2.1 §4.1.4)
+  uint8_t alpha_ref = 0;      // the reference as 8-bit fixed point (§2.14.9)
+  uint8_t* stencil = nullptr; // row 0 at the bottom, stride fb_width
+  uint8_t stencil_func = 0;   // depth_func_bits encoding (§4.1.5)
+  uint8_t stencil_ref = 0;    // clamped to [0, 255]
   uint8_t stencil_value_mask = 0xff;
   uint8_t stencil_write_mask = 0xff;
   StencilOp stencil_ops[3] = {}; // stencil fails, depth fails, depth passes
@@ -88,9 +80,9 @@ struct FragCtx {
   // Rows of a block that lie entirely inside the buffer (bx + 8 <= fb_width) are loaded and
   // stored whole, with the coverage applied as a lane select.
   int fb_width = 0;
-  bool noop = true;          // nothing can change: no colour, depth or stencil update
-  bool needs_color = false;  // the colour path or the alpha test reads the primitive's colour
-  bool needs_depth = false;  // the depth path reads the primitive's z
+  bool noop = true;         // nothing can change: no colour, depth or stencil update
+  bool needs_color = false; // the colour path or the alpha test reads the primitive's colour
+  bool needs_depth = false; // the depth path reads the primitive's z
   BlockFn fn[kShadePathCount] = {}; // indexed by ShadePath
   // Texturing, colour sum and fog per fragment (fragment/shade.h); set when the draw has
   // texturing or fog on and reads colour. Primitives then run ShadePath::PerFragment.
@@ -106,7 +98,7 @@ void prepare_fragments(const RasterState& rs, const Framebuffer& fb, FragCtx& ct
 // The block loop for a key and shade path at the current simd_level() (exposed for tests).
 BlockFn select_block_fn(const StateKey& key, ShadePath shade);
 
-// The same from the baseline instances and, when PINEDA_HAVE_AVX2_BLOCKS, from the AVX2 ones
+// The same from the baseline instances and, when PINEDA_HAVE_AVX2, from the AVX2 ones
 // (to be called only when the processor has AVX2, BMI1 and BMI2: simd_level.h).
 BlockFn select_block_fn_baseline(const StateKey& key, ShadePath shade);
 BlockFn select_block_fn_avx2(const StateKey& key, ShadePath shade);

@@ -11,7 +11,7 @@
 // and the float results equal the baseline ones.
 #include "fragment/fragment_ops.h"
 
-#if PINEDA_HAVE_AVX2_BLOCKS
+#if PINEDA_HAVE_AVX2
 
 #include <immintrin.h>
 
@@ -50,4 +50,4 @@ BlockFn select_block_fn_avx2(const StateKey& key, ShadePath shade) {
 #pragma GCC pop_options
 #endif
 
-#endif // PINEDA_HAVE_AVX2_BLOCKS
+#endif // PINEDA_HAVE_AVX2

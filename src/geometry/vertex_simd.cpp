@@ -3,8 +3,7 @@
 // scalar functions, whose results the lanes reproduce bit for bit.
 #include "geometry/vertex_simd.h"
 
-#include <cstdlib>
-
+#include "core/simd_level.h"
 #include "geometry/vertex_simd_impl.h"
 #include "raster/raster.h"
 
@@ -18,15 +17,10 @@ size_t light_vertices_avx2(const LightSetup& s, const LitFaces& faces, const Inp
                            PVertex* out, size_t n);
 
 namespace {
-// Whether the CPU runs AVX2; PINEDA_NO_AVX2 (set, non-empty) keeps the four-lane code, to
-// compare both.
+// The eight-lane code where the processor has AVX2 (core/simd_level.h; PINEDA_SIMD=sse2 keeps
+// the four-lane code, to compare both).
 bool use_avx2() {
-  static const bool avx2 = [] {
-    __builtin_cpu_init();
-    const char* off = std::getenv("PINEDA_NO_AVX2");
-    return __builtin_cpu_supports("avx2") && (off == nullptr || *off == '\0');
-  }();
-  return avx2;
+  return simd_level() == SimdLevel::Avx2;
 }
 } // namespace
 #endif

@@ -12,7 +12,7 @@
 #include <random>
 #include <vector>
 
-#include "fragment/simd_level.h"
+#include "core/simd_level.h"
 
 namespace {
 

@@ -15,6 +15,7 @@
 #include <glm/mat4x4.hpp>
 
 #include "api_fixture.h"
+#include "core/simd_level.h"
 #include "geometry/clip.h"
 #include "geometry/light_eval.h"
 #include "geometry/vertex_simd.h"
@@ -65,7 +66,7 @@ void expect_same_floats(const float* a, const float* b, int n, size_t vertex, co
   }
 }
 
-TEST(VertexSimd, TransformMatchesScalar) {
+void check_transform_matches_scalar() {
   const glm::mat4 proj = glm::perspective(0.9f, 1.3f, 0.5f, 20.0f);
   const glm::mat4 mv = glm::rotate(glm::translate(glm::mat4(1.0f), glm::vec3(0.2f, -0.1f, -4.0f)),
                                    0.7f, glm::vec3(0.3f, 1.0f, 0.2f));
@@ -96,7 +97,20 @@ TEST(VertexSimd, TransformMatchesScalar) {
   }
 }
 
-TEST(VertexSimd, LightingMatchesScalar) {
+// Both instruction-set levels (core/simd_level.h): the SSE2 lanes and, where the processor has
+// it, the AVX2 ones.
+TEST(VertexSimd, TransformMatchesScalar) {
+  const pineda::SimdLevel saved = pineda::simd_level();
+  for (const pineda::SimdLevel level :
+       {pineda::SimdLevel::Baseline, pineda::simd_level_supported()}) {
+    pineda::set_simd_level(level);
+    SCOPED_TRACE(level == pineda::SimdLevel::Avx2 ? "AVX2" : "baseline");
+    check_transform_matches_scalar();
+  }
+  pineda::set_simd_level(saved);
+}
+
+void check_lighting_matches_scalar() {
   const glm::mat4 mv = glm::rotate(glm::translate(glm::mat4(1.0f), glm::vec3(0.0f, 0.5f, -5.0f)),
                                    0.4f, glm::vec3(1.0f, 0.2f, 0.0f));
   for (int config = 0; config < 16; ++config) {
@@ -142,6 +156,19 @@ TEST(VertexSimd, LightingMatchesScalar) {
                            "back");
     }
   }
+}
+
+// Both instruction-set levels (core/simd_level.h): the SSE2 lanes and, where the processor has
+// it, the AVX2 ones.
+TEST(VertexSimd, LightingMatchesScalar) {
+  const pineda::SimdLevel saved = pineda::simd_level();
+  for (const pineda::SimdLevel level :
+       {pineda::SimdLevel::Baseline, pineda::simd_level_supported()}) {
+    pineda::set_simd_level(level);
+    SCOPED_TRACE(level == pineda::SimdLevel::Avx2 ? "AVX2" : "baseline");
+    check_lighting_matches_scalar();
+  }
+  pineda::set_simd_level(saved);
 }
 
 } // namespace

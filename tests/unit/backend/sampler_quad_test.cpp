@@ -10,6 +10,7 @@
 #include <limits>
 #include <vector>
 
+#include "core/simd_level.h"
 #include "texture/sampler.h"
 
 namespace pineda {
@@ -66,7 +67,7 @@ void expect_same(const SamplerView& v, const std::vector<float>& s, const std::v
   }
 }
 
-TEST(SampleQuads, MatchesSampleTextureForEveryFilterAndWrap) {
+void check_matches_sample_texture_for_every_filter_and_wrap() {
   Rng rng;
   const GLenum min_filters[] = {GL_NEAREST,
                                 GL_LINEAR,
@@ -104,7 +105,20 @@ TEST(SampleQuads, MatchesSampleTextureForEveryFilterAndWrap) {
   EXPECT_GT(vector_views, 0);
 }
 
-TEST(SampleQuads, ExtremeCoordinatesAndLevelsOfDetail) {
+// Both instruction-set levels (core/simd_level.h): the SSE2 lanes and, where the processor has
+// it, the AVX2 ones.
+TEST(SampleQuads, MatchesSampleTextureForEveryFilterAndWrap) {
+  const pineda::SimdLevel saved = pineda::simd_level();
+  for (const pineda::SimdLevel level :
+       {pineda::SimdLevel::Baseline, pineda::simd_level_supported()}) {
+    pineda::set_simd_level(level);
+    SCOPED_TRACE(level == pineda::SimdLevel::Avx2 ? "AVX2" : "baseline");
+    check_matches_sample_texture_for_every_filter_and_wrap();
+  }
+  pineda::set_simd_level(saved);
+}
+
+void check_extreme_coordinates_and_levels_of_detail() {
   Rng rng;
   Texture tex(32, 16, rng);
   SamplerView& v = tex.view;
@@ -134,6 +148,19 @@ TEST(SampleQuads, ExtremeCoordinatesAndLevelsOfDetail) {
       }
     if (!lambda.empty()) expect_same(v, s, t, lambda, 0.0f);
   }
+}
+
+// Both instruction-set levels (core/simd_level.h): the SSE2 lanes and, where the processor has
+// it, the AVX2 ones.
+TEST(SampleQuads, ExtremeCoordinatesAndLevelsOfDetail) {
+  const pineda::SimdLevel saved = pineda::simd_level();
+  for (const pineda::SimdLevel level :
+       {pineda::SimdLevel::Baseline, pineda::simd_level_supported()}) {
+    pineda::set_simd_level(level);
+    SCOPED_TRACE(level == pineda::SimdLevel::Avx2 ? "AVX2" : "baseline");
+    check_extreme_coordinates_and_levels_of_detail();
+  }
+  pineda::set_simd_level(saved);
 }
 
 } // namespace

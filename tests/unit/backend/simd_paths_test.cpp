@@ -17,7 +17,7 @@
 
 #include "fragment/fragment_ops.h"
 #include "fragment/shade.h"
-#include "fragment/simd_level.h"
+#include "core/simd_level.h"
 #include "geometry/vertex.h"
 #include "raster/raster.h"
 #include "raster_test_util.h"
@@ -261,7 +261,7 @@ TEST(SimdPaths, LevelSelectsTable) {
             select_block_fn_baseline(key, ShadePath::Smooth));
   set_simd_level(SimdLevel::Avx2);
   EXPECT_EQ(simd_level(), simd_level_supported());
-#if PINEDA_HAVE_AVX2_BLOCKS
+#if PINEDA_HAVE_AVX2
   if (simd_level_supported() == SimdLevel::Avx2) {
     EXPECT_EQ(select_block_fn(key, ShadePath::Smooth),
               select_block_fn_avx2(key, ShadePath::Smooth));

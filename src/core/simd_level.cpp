@@ -1,11 +1,9 @@
-// Run-time choice of the block loops' instruction set (simd_level.h).
-#include "fragment/simd_level.h"
+// Run-time choice of the hot loops' instruction set (simd_level.h).
+#include "core/simd_level.h"
 
 #include <atomic>
 #include <cstdlib>
 #include <cstring>
-
-#include "fragment/fragment_ops.h"
 
 namespace pineda {
 
@@ -15,7 +13,7 @@ namespace {
 std::atomic<int> g_level{-1};
 
 SimdLevel detect() {
-#if PINEDA_HAVE_AVX2_BLOCKS
+#if PINEDA_HAVE_AVX2
   __builtin_cpu_init();
   // GCC's and Clang's checks include the OS support for the YMM state (XGETBV).
   if (__builtin_cpu_supports("avx2") && __builtin_cpu_supports("bmi") &&
