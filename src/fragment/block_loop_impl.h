@@ -618,20 +618,8 @@ template <ColorFormat F, ColorPath C, BlendPath B, bool X>
   // GL 2.1 §4.1.10: the logical operation takes blending's place (the key has blend off).
   const bool logic = X && ctx.key.logic_op;
   const bool reads_dst = kReadsDst || logic;
-  if (!reads_dst) {
-    if (m == 0xffu) {
-      row_store(row, s);
-      return;
-    }
-    // A partial row that needs nothing of the destination stores its covered pixels alone:
-    // merging into a loaded row would make the store wait for the row's cache line, which for
-    // small scattered primitives is usually a miss.
-    alignas(32) uint32_t px[N];
-    row_store(px, s);
-    for (unsigned b = m; b != 0; b &= b - 1) {
-      const int i = std::countr_zero(b);
-      std::memcpy(row + 4 * i, &px[i], 4);
-    }
+  if (m == 0xffu && !reads_dst) {
+    row_store(row, s);
     return;
   }
   if (in_buffer) {
