@@ -15,7 +15,7 @@ while [ $# -gt 0 ] && [ "$1" != "--" ]; do libs+=("$1"); shift; done
 [ "${1:-}" = "--" ] && shift
 scenes=("$@")
 [ ${#scenes[@]} -eq 0 ] && scenes=(bench_tiny_tris bench_overdraw_depth bench_lit_mesh bench_immediate
-                                   bench_gears_lists bench_blend_heavy)
+                                   bench_gears_lists bench_blend_heavy bench_textured_mesh)
 if [ ${#libs[@]} -lt 1 ] || [ ${#libs[@]} -gt 2 ]; then
   sed -n 2,8p "$0" >&2
   exit 2
