@@ -1,8 +1,10 @@
 // The specialized block loops of the per-fragment operations (GL 2.1 §4.1), written once for
-// two instruction sets. fragment_ops.cpp includes this file for the baseline build (SSE2 on
+// three instruction sets. fragment_ops.cpp includes this file for the baseline build (SSE2 on
 // x86-64, NEON on AArch64), fragment_ops_avx2.cpp includes it again with PINEDA_BLOCK_AVX2
-// set, inside a region compiled for AVX2. Everything here lives in an unnamed namespace, so
-// each translation unit has its own instances and the two never meet at link time.
+// set, inside a region compiled for AVX2, and fragment_ops_avx512.cpp with PINEDA_BLOCK_AVX2
+// and PINEDA_BLOCK_AVX512 set, inside a region compiled for AVX-512. Everything here lives in
+// an unnamed namespace, so each translation unit has its own instances and they never meet at
+// link time.
 //
 // One block loop handles up to 8x8 fragments of one primitive, row by row: depth test and
 // depth write for the covered fragments of the row (GL 2.1 §4.1.6), then colour
@@ -18,7 +20,11 @@
 // 8-lane (256-bit) vector with AVX2. The code below is written on Row's parts and works for
 // both; only the few functions whose instructions differ (lane masks, depth conversion,
 // smooth colour packing, the 16-bit blend) have a version per instruction set, each doing
-// exactly the same arithmetic per lane, so both builds give the same bytes.
+// exactly the same arithmetic per lane, so both builds give the same bytes. The AVX-512
+// instances are the AVX2 ones with a few functions replaced (PINEDA_BLOCK_AVX512): coverage and
+// test results in opmask registers with masked loads and stores instead of lane masks and
+// blends, and 512-bit vectors where a row's work fits one (eight depth values as doubles, the
+// colours of four pixels, a row's pixels widened to 16 bits for blending).
 //
 // Included only by those two files; it has no include guard on purpose.
 
@@ -34,6 +40,10 @@
 #include "fragment/shade.h"
 #include "fragment/simd.h"
 
+#ifndef PINEDA_BLOCK_AVX512
+#define PINEDA_BLOCK_AVX512 0
+#endif
+
 #if PINEDA_BLOCK_AVX2
 #include <immintrin.h>
 #endif
@@ -48,6 +58,12 @@ using u32x8 = uint32_t __attribute__((vector_size(32)));
 using i32x8 = int32_t __attribute__((vector_size(32)));
 using f32x8 = float __attribute__((vector_size(32)));
 using u16x16 = uint16_t __attribute__((vector_size(32)));
+#if PINEDA_BLOCK_AVX512
+using f32x16 = float __attribute__((vector_size(64)));
+using i32x16 = int32_t __attribute__((vector_size(64)));
+using f64x8 = double __attribute__((vector_size(64)));
+using u16x32 = uint16_t __attribute__((vector_size(64)));
+#endif
 using LaneU = u32x8;
 using LaneI = i32x8;
 using LaneF = f32x8;
@@ -120,6 +136,23 @@ inline f64x4 vmax(f64x4 a, f64x4 b) {
 inline f64x4 vmin(f64x4 a, f64x4 b) {
   return _mm256_min_pd(a, b);
 }
+#if PINEDA_BLOCK_AVX512
+// The AVX-512 intrinsics below are the zero-masking forms with every lane selected (the same
+// instructions): GCC 12 warns about the undefined pass-through operand of the plain forms
+// (-Wmaybe-uninitialized).
+inline f32x16 vmax(f32x16 a, f32x16 b) {
+  return _mm512_maskz_max_ps(0xffff, a, b);
+}
+inline f32x16 vmin(f32x16 a, f32x16 b) {
+  return _mm512_maskz_min_ps(0xffff, a, b);
+}
+inline f64x8 vmax(f64x8 a, f64x8 b) {
+  return _mm512_maskz_max_pd(0xff, a, b);
+}
+inline f64x8 vmin(f64x8 a, f64x8 b) {
+  return _mm512_maskz_min_pd(0xff, a, b);
+}
+#endif
 
 #else
 
@@ -174,6 +207,14 @@ inline LaneI to_unorm8(LaneF v) {
   v = vmin(vmax(v, zero), one);
   return __builtin_convertvector(v * 255.0f + 0.5f, LaneI);
 }
+#if PINEDA_BLOCK_AVX512
+// The same on sixteen lanes (the four channels of four pixels).
+inline i32x16 to_unorm8(f32x16 v) {
+  const f32x16 zero = {}, one = zero + 1.0f;
+  v = vmin(vmax(v, zero), one);
+  return __builtin_convertvector(v * 255.0f + 0.5f, i32x16);
+}
+#endif
 
 // One block row of the colours shade_block computed (ShadePath::PerFragment).
 template <ColorFormat P> void per_fragment_row(const float (*sc)[64], int j, Row& out) {
@@ -192,7 +233,9 @@ template <ColorFormat P> void per_fragment_row(const float (*sc)[64], int j, Row
 // one vector and packed with a few instructions.
 template <ColorFormat P> struct SmoothPlanes {
   f32x4 v0 = {}, dx = {}, dy = {};
-#if PINEDA_BLOCK_AVX2
+#if PINEDA_BLOCK_AVX512
+  f32x16 step[2] = {}; // pixels 4k .. 4k + 3 of a row: i * dx for i = 4k + q in lanes 4q ..
+#elif PINEDA_BLOCK_AVX2
   f32x8 step[N / 2] = {}; // pixels k and k + 4 of a row: i * dx for i = k (low), k + 4 (high)
 #else
   f32x4 step[N] = {};
@@ -209,7 +252,14 @@ template <ColorFormat P> struct SmoothPlanes {
       dx[offs[c]] = in.color_w[c].dx;
       dy[offs[c]] = in.color_w[c].dy;
     }
-#if PINEDA_BLOCK_AVX2
+#if PINEDA_BLOCK_AVX512
+    const f32x16 dx4 =
+        __builtin_shufflevector(dx, dx, 0, 1, 2, 3, 0, 1, 2, 3, 0, 1, 2, 3, 0, 1, 2, 3);
+    for (int k = 0; k < 2; ++k) {
+      const auto p0 = static_cast<float>(4 * k), p1 = p0 + 1.0f, p2 = p0 + 2.0f, p3 = p0 + 3.0f;
+      step[k] = f32x16{p0, p0, p0, p0, p1, p1, p1, p1, p2, p2, p2, p2, p3, p3, p3, p3} * dx4;
+    }
+#elif PINEDA_BLOCK_AVX2
     const f32x8 dx2 = __builtin_shufflevector(dx, dx, 0, 1, 2, 3, 0, 1, 2, 3);
     for (int k = 0; k < N / 2; ++k) {
       const auto lo = static_cast<float>(k), hi = static_cast<float>(k + 4);
@@ -230,7 +280,31 @@ template <ColorFormat P>
                                              int di, int dj, Row& out) {
   const float fi = static_cast<float>(di), fj = static_cast<float>(dj);
   const f32x4 cr = sp.v0 + fi * sp.dx + fj * sp.dy;
-#if PINEDA_BLOCK_AVX2
+#if PINEDA_BLOCK_AVX512
+  // Four pixels' channels in one vector, in memory order: converting each lane to a byte
+  // (vpmovdb) leaves four packed pixels, two conversions the row.
+  const f32x16 cr4 =
+      __builtin_shufflevector(cr, cr, 0, 1, 2, 3, 0, 1, 2, 3, 0, 1, 2, 3, 0, 1, 2, 3);
+  i32x16 px[2];
+  if (sp.unit_w) {
+    for (int k = 0; k < 2; ++k)
+      px[k] = to_unorm8(cr4 + sp.step[k]);
+  } else {
+    const PlaneF iw = in.inv_w;
+    const float iwr = iw.v0 + fi * iw.dx + fj * iw.dy;
+    const f32x8 lane = {0, 1, 2, 3, 4, 5, 6, 7};
+    const f32x8 w = 1.0f / (iwr + lane * iw.dx);
+    const f32x16 wk[2] = {
+        __builtin_shufflevector(w, w, 0, 0, 0, 0, 1, 1, 1, 1, 2, 2, 2, 2, 3, 3, 3, 3),
+        __builtin_shufflevector(w, w, 4, 4, 4, 4, 5, 5, 5, 5, 6, 6, 6, 6, 7, 7, 7, 7),
+    };
+    for (int k = 0; k < 2; ++k)
+      px[k] = to_unorm8((cr4 + sp.step[k]) * wk[k]);
+  }
+  out.v[0] = reinterpret_cast<u32x8>(
+      _mm256_set_m128i(_mm512_maskz_cvtepi32_epi8(0xffff, reinterpret_cast<__m512i>(px[1])),
+                       _mm512_maskz_cvtepi32_epi8(0xffff, reinterpret_cast<__m512i>(px[0]))));
+#elif PINEDA_BLOCK_AVX2
   // Pixels k (low half) and k + 4 (high half) in one vector: the in-lane packs below then
   // leave the eight pixels in order.
   const f32x8 cr2 = __builtin_shufflevector(cr, cr, 0, 1, 2, 3, 0, 1, 2, 3);
@@ -276,7 +350,23 @@ template <ColorFormat P>
 #endif
 }
 
-#if PINEDA_BLOCK_AVX2
+#if PINEDA_BLOCK_AVX512
+// Eight pixels: s over d, alpha at byte offset A (blend_simd.h blend_over_lanes), the row's 32
+// channels widened to 16-bit lanes of one vector and narrowed back with vpmovwb.
+template <int A> inline u32x8 blend_over8(u32x8 s, u32x8 d) {
+  const u16x32 sv = reinterpret_cast<u16x32>(_mm512_cvtepu8_epi16(reinterpret_cast<__m256i>(s)));
+  const u16x32 dv = reinterpret_cast<u16x32>(_mm512_cvtepu8_epi16(reinterpret_cast<__m256i>(d)));
+  const u16x32 a = __builtin_shufflevector(
+      sv, sv, A, A, A, A, 4 + A, 4 + A, 4 + A, 4 + A, 8 + A, 8 + A, 8 + A, 8 + A, 12 + A, 12 + A,
+      12 + A, 12 + A, 16 + A, 16 + A, 16 + A, 16 + A, 20 + A, 20 + A, 20 + A, 20 + A, 24 + A,
+      24 + A, 24 + A, 24 + A, 28 + A, 28 + A, 28 + A, 28 + A);
+  const u16x32 n = sv * a + dv * (255 - a) + 128;
+  const u16x32 k257 = u16x32{} + 257;
+  return reinterpret_cast<u32x8>(
+      _mm512_maskz_cvtepi16_epi8(0xffffffffu, _mm512_mulhi_epu16(reinterpret_cast<__m512i>(n),
+                                                                 reinterpret_cast<__m512i>(k257))));
+}
+#elif PINEDA_BLOCK_AVX2
 // blend_simd.h blend_over_lanes on sixteen 16-bit lanes (four pixels, two per 128-bit half).
 template <int A> inline u16x16 blend_over_lanes16(u16x16 s, u16x16 d) {
   const u16x16 a = __builtin_shufflevector(s, s, A, A, A, A, 4 + A, 4 + A, 4 + A, 4 + A, 8 + A,
@@ -358,7 +448,16 @@ void blend_generic_row(const FragCtx& ctx, unsigned m, Row& s, const Row& d) {
                                                int dj) {
   const double zr = zp.v0 + di * zp.dx + dj * zp.dy;
   Row zv;
-#if PINEDA_BLOCK_AVX2
+#if PINEDA_BLOCK_AVX512
+  // The row in one vector of doubles; the unsigned conversion covers 32-bit buffers too (the
+  // values lie in [0.5, 2^32 - 0.5], where truncating to uint32 is what the int32 or int64
+  // conversions of the other builds give).
+  const f64x8 zero = {}, zmax = zero + ctx.depth_max;
+  const f64x8 lane = {0.0, 1.0, 2.0, 3.0, 4.0, 5.0, 6.0, 7.0};
+  const f64x8 z = zr + lane * zp.dx;
+  const f64x8 zc = vmin(vmax(z, zero), zmax) + 0.5;
+  zv.v[0] = reinterpret_cast<u32x8>(_mm512_maskz_cvttpd_epu32(0xff, reinterpret_cast<__m512d>(zc)));
+#elif PINEDA_BLOCK_AVX2
   const f64x4 zero = {}, zmax = zero + ctx.depth_max;
   f64x4 zc[2];
   for (int h = 0; h < 2; ++h) {
@@ -403,6 +502,26 @@ template <DepthPath D>
   uint32_t* const d = ctx.depth + static_cast<ptrdiff_t>(y) * ctx.depth_stride + bx;
   const Row zv = depth_values(ctx, in.z, di, dj);
   const bool write = D != DepthPath::Generic || ctx.depth_write;
+#if PINEDA_BLOCK_AVX512
+  // Coverage and result as opmasks: the masked load and store touch only the covered pixels
+  // (masked-off lanes do not fault), so the last block of a row needs no other path.
+  const __m256i z = reinterpret_cast<__m256i>(zv.v[0]);
+  const __m256i old = _mm256_maskz_loadu_epi32(static_cast<__mmask8>(m), d);
+  const auto k = static_cast<__mmask8>(m);
+  unsigned bits;
+  if constexpr (D == DepthPath::LessWrite) {
+    bits = _mm256_mask_cmplt_epu32_mask(k, z, old);
+  } else if constexpr (D == DepthPath::LequalWrite) {
+    bits = _mm256_mask_cmple_epu32_mask(k, z, old);
+  } else {
+    const unsigned f = ctx.depth_func;
+    bits = (_mm256_mask_cmplt_epu32_mask(k, z, old) & (0u - (f & 1u))) |
+           (_mm256_mask_cmpeq_epu32_mask(k, z, old) & (0u - ((f >> 1) & 1u))) |
+           (_mm256_mask_cmpgt_epu32_mask(k, z, old) & (0u - ((f >> 2) & 1u)));
+  }
+  if (write && bits != 0) _mm256_mask_storeu_epi32(d, static_cast<__mmask8>(bits), z);
+  return bits;
+#else
   if (bx + N <= ctx.fb_width) {
     // The whole row lies in the buffer: test all eight lanes and keep the covered ones.
     Row old = row_load(d);
@@ -448,6 +567,7 @@ template <DepthPath D>
     }
   }
   return bits;
+#endif
 }
 
 // The depth test (GL 2.1 §4.1.6) of a fully covered block at once: true when no fragment of
@@ -622,6 +742,18 @@ template <ColorFormat F, ColorPath C, BlendPath B, bool X>
     row_store(row, s);
     return;
   }
+#if PINEDA_BLOCK_AVX512
+  // The coverage as an opmask: only covered pixels are read and written (masked-off lanes do
+  // not fault), so partial rows need no select and the last block of a row no other path.
+  static_cast<void>(in_buffer);
+  const auto k = static_cast<__mmask8>(m);
+  if (reads_dst) {
+    Row dst;
+    dst.v[0] = reinterpret_cast<u32x8>(_mm256_maskz_loadu_epi32(k, row));
+    combine_row4<F, C, B>(ctx, m, logic, s, dst);
+  }
+  _mm256_mask_storeu_epi32(row, k, reinterpret_cast<__m256i>(s.v[0]));
+#else
   if (in_buffer) {
     // The whole row lies in the buffer: compute all eight lanes and select the covered ones.
     Row dst = row_load(row);
@@ -647,6 +779,7 @@ template <ColorFormat F, ColorPath C, BlendPath B, bool X>
   row_store(tmp, s);
   for (int i = 0; i < N; ++i)
     if ((m >> i) & 1u) std::memcpy(row + 4 * i, &tmp[i], 4);
+#endif
 }
 
 // The same for 3-byte RGB8 pixels, one fragment at a time; `s` is packed as RGBA8.

@@ -1,6 +1,7 @@
 // The per-fragment operations' set-up for a draw (prepare_fragments) and the choice of the
 // block loop instance for a state key. The block loops themselves are in block_loop_impl.h,
-// compiled here for the baseline instruction set and in fragment_ops_avx2.cpp for AVX2.
+// compiled here for the baseline instruction set, in fragment_ops_avx2.cpp for AVX2 and in
+// fragment_ops_avx512.cpp for AVX-512.
 #include "fragment/fragment_ops.h"
 
 #include "fragment/blend_simd.h"
@@ -62,9 +63,14 @@ BlockFn select_block_fn_baseline(const StateKey& key, ShadePath shade) {
 }
 
 BlockFn select_block_fn(const StateKey& key, ShadePath shade) {
-#if PINEDA_HAVE_AVX2
-  if (simd_level() == SimdLevel::Avx2) return select_block_fn_avx2(key, shade);
+  const SimdLevel level = simd_level();
+#if PINEDA_HAVE_AVX512
+  if (level >= SimdLevel::Avx512) return select_block_fn_avx512(key, shade);
 #endif
+#if PINEDA_HAVE_AVX2
+  if (level >= SimdLevel::Avx2) return select_block_fn_avx2(key, shade);
+#endif
+  static_cast<void>(level);
   return select_from_tables(key, shade);
 }
 

@@ -10,7 +10,7 @@
 #include <cstddef>
 #include <cstdint>
 
-#include "core/simd_level.h" // PINEDA_HAVE_AVX2: fragment_ops_avx2.cpp is built
+#include "core/simd_level.h" // PINEDA_HAVE_AVX2/AVX512: fragment_ops_avx2/avx512.cpp are built
 #include "fragment/blend.h"
 #include "fragment/per_fragment.h"
 #include "fragment/state_key.h"
@@ -99,9 +99,11 @@ void prepare_fragments(const RasterState& rs, const Framebuffer& fb, FragCtx& ct
 BlockFn select_block_fn(const StateKey& key, ShadePath shade);
 
 // The same from the baseline instances and, when PINEDA_HAVE_AVX2, from the AVX2 ones
-// (to be called only when the processor has AVX2, BMI1 and BMI2: simd_level.h).
+// (to be called only when the processor has AVX2, BMI1 and BMI2: simd_level.h), and, when
+// PINEDA_HAVE_AVX512, from the AVX-512 ones (only at SimdLevel::Avx512).
 BlockFn select_block_fn_baseline(const StateKey& key, ShadePath shade);
 BlockFn select_block_fn_avx2(const StateKey& key, ShadePath shade);
+BlockFn select_block_fn_avx512(const StateKey& key, ShadePath shade);
 
 // Mask of the pixels of the block at (bx, by) inside the inclusive rectangle [x0,x1]x[y0,y1].
 inline uint64_t rect_block_mask(int x0, int y0, int x1, int y1, int bx, int by) {

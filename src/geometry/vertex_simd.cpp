@@ -1,6 +1,8 @@
-// Four vertices at a time (vertex_simd.h, bodies in vertex_simd_impl.h), or eight on CPUs with
-// AVX2 (vertex_simd_avx2.cpp, chosen at run time); the last few vertices of a draw take the
-// scalar functions, whose results the lanes reproduce bit for bit.
+// Four vertices at a time (vertex_simd.h, bodies in vertex_simd_impl.h), eight on CPUs with
+// AVX2 (vertex_simd_avx2.cpp), sixteen with AVX-512 (vertex_simd_avx512.cpp), chosen at run
+// time; a draw's vertices go through the widest lanes first, what is left through the
+// narrower ones, the last few through the scalar functions, whose results the lanes reproduce
+// bit for bit.
 #include "geometry/vertex_simd.h"
 
 #include "core/simd_level.h"
@@ -16,20 +18,21 @@ size_t transform_positions_avx2(const float* m, const ClipSetup& cs, const Viewp
 size_t light_vertices_avx2(const LightSetup& s, const LitFaces& faces, const InputVertex* in,
                            PVertex* out, size_t n);
 
-namespace {
-// The eight-lane code where the processor has AVX2 (core/simd_level.h; PINEDA_SIMD=sse2 keeps
-// the four-lane code, to compare both).
-bool use_avx2() {
-  return simd_level() == SimdLevel::Avx2;
-}
-} // namespace
+// vertex_simd_avx512.cpp: whole groups of sixteen vertices, the same way.
+size_t transform_positions_avx512(const float* m, const ClipSetup& cs, const Viewport& vp,
+                                  const InputVertex* in, PVertex* out, size_t n);
+size_t light_vertices_avx512(const LightSetup& s, const LitFaces& faces, const InputVertex* in,
+                             PVertex* out, size_t n);
 #endif
 
 void transform_positions(const float* m, const ClipSetup& cs, const Viewport& vp,
                          const InputVertex* in, PVertex* out, size_t n) {
   size_t i = 0;
 #if defined(PINEDA_VERTEX_AVX2)
-  if (use_avx2()) i = transform_positions_avx2(m, cs, vp, in, out, n);
+  // core/simd_level.h; PINEDA_SIMD=avx2 or sse2 keeps the narrower lanes, to compare them.
+  const SimdLevel level = simd_level();
+  if (level >= SimdLevel::Avx512) i = transform_positions_avx512(m, cs, vp, in, out, n);
+  if (level >= SimdLevel::Avx2) i += transform_positions_avx2(m, cs, vp, in + i, out + i, n - i);
 #endif
   for (; i + 4 <= n; i += 4)
     Simd<4>::transform(m, cs, vp, in + i, out + i);
@@ -47,7 +50,9 @@ void light_vertices(const LightSetup& s, const LitFaces& faces, const InputVerte
                     size_t n) {
   size_t i = 0;
 #if defined(PINEDA_VERTEX_AVX2)
-  if (use_avx2()) i = light_vertices_avx2(s, faces, in, out, n);
+  const SimdLevel level = simd_level();
+  if (level >= SimdLevel::Avx512) i = light_vertices_avx512(s, faces, in, out, n);
+  if (level >= SimdLevel::Avx2) i += light_vertices_avx2(s, faces, in + i, out + i, n - i);
 #endif
   for (; i + 4 <= n; i += 4)
     Simd<4>::light(s, faces, in + i, out + i);

@@ -1,9 +1,10 @@
 // The per-vertex transform (GL 2.1 §2.11, §2.12) and lighting (§2.14.1) several vertices at
-// a time: the vertices are transposed into one vector per component (x of four or eight
+// a time: the vertices are transposed into one vector per component (x of 4, 8 or 16
 // vertices, y of them, ...) and every operation of the scalar code (transform.cpp, clip.cpp
 // clip_code, raster.h to_window, light_eval.cpp light_vertex_faces) runs on the lanes in the
 // same order, so the results are the scalar ones bit for bit. Four lanes with SSE2 (or any
-// target), eight with AVX2 when the CPU has it (vertex_simd.cpp chooses at run time).
+// target), eight with AVX2, sixteen with AVX-512 when the CPU has them (vertex_simd.cpp
+// chooses at run time).
 #pragma once
 
 #include <cstddef>

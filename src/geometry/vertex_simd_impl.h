@@ -1,12 +1,12 @@
 // The bodies of vertex_simd.h for N lanes (4: SSE2 or any target, vertex_simd.cpp; 8: AVX2,
-// vertex_simd_avx2.cpp). Each function mirrors a scalar one expression by expression: the
-// same operands, the same association, no fused multiply-add (the AVX2 file is compiled with
-// -ffp-contract=off), and a select where the scalar code branches per vertex, so every lane
-// gets the scalar result.
+// vertex_simd_avx2.cpp; 16: AVX-512, vertex_simd_avx512.cpp). Each function mirrors a scalar
+// one expression by expression: the same operands, the same association, no fused
+// multiply-add (the AVX2 and AVX-512 files are compiled with -ffp-contract=off), and a select
+// where the scalar code branches per vertex, so every lane gets the scalar result.
 //
 // Everything here has internal linkage and calls no inline function of another header: the
-// file is compiled for two instruction sets, and a shared inline function could be linked
-// from the AVX2 copy into the code that runs on any x86-64.
+// file is compiled for three instruction sets, and a shared inline function could be linked
+// from the AVX2 or AVX-512 copy into the code that runs on any x86-64.
 #pragma once
 
 #include <cstddef>
@@ -34,8 +34,13 @@ template <> struct Lanes<8> {
   using V = float __attribute__((vector_size(32)));
   using M = int32_t __attribute__((vector_size(32)));
 };
+template <> struct Lanes<16> {
+  using V = float __attribute__((vector_size(64)));
+  using M = int32_t __attribute__((vector_size(64)));
+};
 
 using F4 = Lanes<4>::V;
+using F8 = Lanes<8>::V;
 
 inline F4 load_f4(const float* p) {
   F4 v;
@@ -73,11 +78,23 @@ template <int N> struct Simd {
     if constexpr (N == 4) {
       for (int j = 0; j < 4; ++j)
         out[j] = lo[j];
-    } else {
+    } else if constexpr (N == 8) {
       F4 hi[4];
       transpose_f4(row(4), row(5), row(6), row(7), hi);
       for (int j = 0; j < 4; ++j)
         out[j] = __builtin_shufflevector(lo[j], hi[j], 0, 1, 2, 3, 4, 5, 6, 7);
+    } else {
+      // Four groups of four vertices, joined into halves of eight, then into sixteen.
+      F4 q1[4], q2[4], q3[4];
+      transpose_f4(row(4), row(5), row(6), row(7), q1);
+      transpose_f4(row(8), row(9), row(10), row(11), q2);
+      transpose_f4(row(12), row(13), row(14), row(15), q3);
+      for (int j = 0; j < 4; ++j) {
+        const F8 a = __builtin_shufflevector(lo[j], q1[j], 0, 1, 2, 3, 4, 5, 6, 7);
+        const F8 b = __builtin_shufflevector(q2[j], q3[j], 0, 1, 2, 3, 4, 5, 6, 7);
+        out[j] =
+            __builtin_shufflevector(a, b, 0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 13, 14, 15);
+      }
     }
   }
 
@@ -92,7 +109,7 @@ template <int N> struct Simd {
       transpose_f4(c[0], c[1], c[2], c[3], rows);
       for (int k = 0; k < 4; ++k)
         store(k, rows[k]);
-    } else {
+    } else if constexpr (N == 8) {
       for (int half = 0; half < 2; ++half) {
         F4 part[4];
         for (int j = 0; j < 4; ++j)
@@ -102,10 +119,41 @@ template <int N> struct Simd {
         for (int k = 0; k < 4; ++k)
           store(4 * half + k, rows[k]);
       }
+    } else {
+      for (int quarter = 0; quarter < 4; ++quarter) {
+        F4 part[4];
+        for (int j = 0; j < 4; ++j)
+          part[j] = quarter16(c[j], quarter);
+        transpose_f4(part[0], part[1], part[2], part[3], rows);
+        for (int k = 0; k < 4; ++k)
+          store(4 * quarter + k, rows[k]);
+      }
     }
   }
 
+  // Lanes 4q .. 4q + 3 of a sixteen-lane vector.
+  static F4 quarter16(V v, int q) {
+    if constexpr (N == 16) {
+      switch (q) {
+      case 0:
+        return __builtin_shufflevector(v, v, 0, 1, 2, 3);
+      case 1:
+        return __builtin_shufflevector(v, v, 4, 5, 6, 7);
+      case 2:
+        return __builtin_shufflevector(v, v, 8, 9, 10, 11);
+      default:
+        return __builtin_shufflevector(v, v, 12, 13, 14, 15);
+      }
+    }
+    return F4{};
+  }
+
   static V vsqrt(V v) {
+#if defined(__AVX512F__)
+    // The zero-masking form with every lane selected: GCC 12 warns about the undefined
+    // pass-through operand of _mm512_sqrt_ps (-Wmaybe-uninitialized).
+    if constexpr (N == 16) return _mm512_maskz_sqrt_ps(static_cast<__mmask16>(0xffff), v);
+#endif
 #if defined(__AVX__)
     if constexpr (N == 8) return _mm256_sqrt_ps(v);
 #endif

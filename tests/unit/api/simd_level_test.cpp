@@ -1,4 +1,4 @@
-// The same GL scenes rendered with the baseline block loops and with the AVX2 ones
+// The same GL scenes rendered with the baseline block loops and with the AVX2 and AVX-512 ones
 // (simd_level.h) give the same bytes: full-screen depth-tested layers (the overdraw bench, with
 // the depth writers around it: clears, scissored clears, DrawPixels of depth, depth mask off,
 // polygon offset, stencil), blended quads, one-pixel triangles, textured and fogged
@@ -49,15 +49,20 @@ std::vector<uint8_t> render(SimdLevel level, const std::function<void()>& draw) 
   return buf;
 }
 
+// Every level above the baseline that the processor has against the baseline.
 void expect_same(const std::function<void()>& draw) {
-  if (pineda::simd_level_supported() != SimdLevel::Avx2) GTEST_SKIP() << "no AVX2";
+  if (pineda::simd_level_supported() < SimdLevel::Avx2) GTEST_SKIP() << "no AVX2";
   const std::vector<uint8_t> base = render(SimdLevel::Baseline, draw);
-  const std::vector<uint8_t> avx2 = render(SimdLevel::Avx2, draw);
-  ASSERT_EQ(base.size(), avx2.size());
-  size_t differ = 0;
-  for (size_t i = 0; i < base.size(); ++i)
-    differ += base[i] != avx2[i];
-  EXPECT_EQ(differ, 0u);
+  for (SimdLevel level : {SimdLevel::Avx2, SimdLevel::Avx512}) {
+    if (level > pineda::simd_level_supported()) continue;
+    SCOPED_TRACE(level == SimdLevel::Avx512 ? "AVX-512" : "AVX2");
+    const std::vector<uint8_t> wide = render(level, draw);
+    ASSERT_EQ(base.size(), wide.size());
+    size_t differ = 0;
+    for (size_t i = 0; i < base.size(); ++i)
+      differ += base[i] != wide[i];
+    EXPECT_EQ(differ, 0u);
+  }
 }
 
 void quad(float x0, float y0, float x1, float y1, float z) {

@@ -97,14 +97,17 @@ void check_transform_matches_scalar() {
   }
 }
 
-// Both instruction-set levels (core/simd_level.h): the SSE2 lanes and, where the processor has
-// it, the AVX2 ones.
+// Every instruction-set level (core/simd_level.h): the SSE2 lanes and, where the processor has
+// them, the AVX2 and AVX-512 ones.
 TEST(VertexSimd, TransformMatchesScalar) {
   const pineda::SimdLevel saved = pineda::simd_level();
   for (const pineda::SimdLevel level :
-       {pineda::SimdLevel::Baseline, pineda::simd_level_supported()}) {
+       {pineda::SimdLevel::Baseline, pineda::SimdLevel::Avx2, pineda::SimdLevel::Avx512}) {
+    if (level > pineda::simd_level_supported()) continue;
     pineda::set_simd_level(level);
-    SCOPED_TRACE(level == pineda::SimdLevel::Avx2 ? "AVX2" : "baseline");
+    SCOPED_TRACE(level == pineda::SimdLevel::Avx512 ? "AVX-512"
+                 : level == pineda::SimdLevel::Avx2 ? "AVX2"
+                                                    : "baseline");
     check_transform_matches_scalar();
   }
   pineda::set_simd_level(saved);
@@ -158,14 +161,17 @@ void check_lighting_matches_scalar() {
   }
 }
 
-// Both instruction-set levels (core/simd_level.h): the SSE2 lanes and, where the processor has
-// it, the AVX2 ones.
+// Every instruction-set level (core/simd_level.h): the SSE2 lanes and, where the processor has
+// them, the AVX2 and AVX-512 ones.
 TEST(VertexSimd, LightingMatchesScalar) {
   const pineda::SimdLevel saved = pineda::simd_level();
   for (const pineda::SimdLevel level :
-       {pineda::SimdLevel::Baseline, pineda::simd_level_supported()}) {
+       {pineda::SimdLevel::Baseline, pineda::SimdLevel::Avx2, pineda::SimdLevel::Avx512}) {
+    if (level > pineda::simd_level_supported()) continue;
     pineda::set_simd_level(level);
-    SCOPED_TRACE(level == pineda::SimdLevel::Avx2 ? "AVX2" : "baseline");
+    SCOPED_TRACE(level == pineda::SimdLevel::Avx512 ? "AVX-512"
+                 : level == pineda::SimdLevel::Avx2 ? "AVX2"
+                                                    : "baseline");
     check_lighting_matches_scalar();
   }
   pineda::set_simd_level(saved);

@@ -105,14 +105,17 @@ void check_matches_sample_texture_for_every_filter_and_wrap() {
   EXPECT_GT(vector_views, 0);
 }
 
-// Both instruction-set levels (core/simd_level.h): the SSE2 lanes and, where the processor has
-// it, the AVX2 ones.
+// Every instruction-set level (core/simd_level.h): the SSE2 lanes and, where the processor has
+// them, the AVX2 and AVX-512 ones.
 TEST(SampleQuads, MatchesSampleTextureForEveryFilterAndWrap) {
   const pineda::SimdLevel saved = pineda::simd_level();
   for (const pineda::SimdLevel level :
-       {pineda::SimdLevel::Baseline, pineda::simd_level_supported()}) {
+       {pineda::SimdLevel::Baseline, pineda::SimdLevel::Avx2, pineda::SimdLevel::Avx512}) {
+    if (level > pineda::simd_level_supported()) continue;
     pineda::set_simd_level(level);
-    SCOPED_TRACE(level == pineda::SimdLevel::Avx2 ? "AVX2" : "baseline");
+    SCOPED_TRACE(level == pineda::SimdLevel::Avx512 ? "AVX-512"
+                 : level == pineda::SimdLevel::Avx2 ? "AVX2"
+                                                    : "baseline");
     check_matches_sample_texture_for_every_filter_and_wrap();
   }
   pineda::set_simd_level(saved);
@@ -150,14 +153,17 @@ void check_extreme_coordinates_and_levels_of_detail() {
   }
 }
 
-// Both instruction-set levels (core/simd_level.h): the SSE2 lanes and, where the processor has
-// it, the AVX2 ones.
+// Every instruction-set level (core/simd_level.h): the SSE2 lanes and, where the processor has
+// them, the AVX2 and AVX-512 ones.
 TEST(SampleQuads, ExtremeCoordinatesAndLevelsOfDetail) {
   const pineda::SimdLevel saved = pineda::simd_level();
   for (const pineda::SimdLevel level :
-       {pineda::SimdLevel::Baseline, pineda::simd_level_supported()}) {
+       {pineda::SimdLevel::Baseline, pineda::SimdLevel::Avx2, pineda::SimdLevel::Avx512}) {
+    if (level > pineda::simd_level_supported()) continue;
     pineda::set_simd_level(level);
-    SCOPED_TRACE(level == pineda::SimdLevel::Avx2 ? "AVX2" : "baseline");
+    SCOPED_TRACE(level == pineda::SimdLevel::Avx512 ? "AVX-512"
+                 : level == pineda::SimdLevel::Avx2 ? "AVX2"
+                                                    : "baseline");
     check_extreme_coordinates_and_levels_of_detail();
   }
   pineda::set_simd_level(saved);

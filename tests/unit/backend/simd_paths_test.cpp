@@ -235,18 +235,27 @@ Result render(const Case& c, SimdLevel level) {
   return Result{t.color_mem, t.depth_mem, t.stencil_mem, fc.samples_passed};
 }
 
-TEST(SimdPaths, Avx2BlockLoopsMatchBaseline) {
-  if (simd_level_supported() != SimdLevel::Avx2) GTEST_SKIP() << "no AVX2 on this machine";
+void expect_level_matches_baseline(SimdLevel level) {
   LevelGuard guard;
   for (const Case& c : make_cases()) {
     SCOPED_TRACE(c.name);
     const Result base = render(c, SimdLevel::Baseline);
-    const Result avx2 = render(c, SimdLevel::Avx2);
-    EXPECT_EQ(base.color, avx2.color);
-    EXPECT_EQ(base.depth, avx2.depth);
-    EXPECT_EQ(base.stencil, avx2.stencil);
-    EXPECT_EQ(base.samples, avx2.samples);
+    const Result wide = render(c, level);
+    EXPECT_EQ(base.color, wide.color);
+    EXPECT_EQ(base.depth, wide.depth);
+    EXPECT_EQ(base.stencil, wide.stencil);
+    EXPECT_EQ(base.samples, wide.samples);
   }
+}
+
+TEST(SimdPaths, Avx2BlockLoopsMatchBaseline) {
+  if (simd_level_supported() < SimdLevel::Avx2) GTEST_SKIP() << "no AVX2 on this machine";
+  expect_level_matches_baseline(SimdLevel::Avx2);
+}
+
+TEST(SimdPaths, Avx512BlockLoopsMatchBaseline) {
+  if (simd_level_supported() < SimdLevel::Avx512) GTEST_SKIP() << "no AVX-512 on this machine";
+  expect_level_matches_baseline(SimdLevel::Avx512);
 }
 
 TEST(SimdPaths, LevelSelectsTable) {
@@ -260,15 +269,47 @@ TEST(SimdPaths, LevelSelectsTable) {
   EXPECT_EQ(select_block_fn(key, ShadePath::Smooth),
             select_block_fn_baseline(key, ShadePath::Smooth));
   set_simd_level(SimdLevel::Avx2);
-  EXPECT_EQ(simd_level(), simd_level_supported());
+  EXPECT_EQ(simd_level(), std::min(SimdLevel::Avx2, simd_level_supported()));
 #if PINEDA_HAVE_AVX2
-  if (simd_level_supported() == SimdLevel::Avx2) {
+  if (simd_level_supported() >= SimdLevel::Avx2) {
     EXPECT_EQ(select_block_fn(key, ShadePath::Smooth),
               select_block_fn_avx2(key, ShadePath::Smooth));
     EXPECT_NE(select_block_fn(key, ShadePath::Smooth),
               select_block_fn_baseline(key, ShadePath::Smooth));
   }
 #endif
+  set_simd_level(SimdLevel::Avx512);
+  EXPECT_EQ(simd_level(), simd_level_supported());
+#if PINEDA_HAVE_AVX512
+  if (simd_level_supported() >= SimdLevel::Avx512) {
+    EXPECT_EQ(select_block_fn(key, ShadePath::Smooth),
+              select_block_fn_avx512(key, ShadePath::Smooth));
+    EXPECT_NE(select_block_fn(key, ShadePath::Smooth),
+              select_block_fn_avx2(key, ShadePath::Smooth));
+  }
+#endif
+}
+
+// set_simd_level and PINEDA_SIMD never go above what the processor has, and PINEDA_SIMD caps
+// the level at the one it names.
+TEST(SimdPaths, LevelIsClamped) {
+  LevelGuard guard;
+  const SimdLevel top = simd_level_supported();
+  for (SimdLevel level : {SimdLevel::Baseline, SimdLevel::Avx2, SimdLevel::Avx512}) {
+    set_simd_level(level);
+    EXPECT_EQ(simd_level(), std::min(level, top));
+  }
+  EXPECT_EQ(simd_level_from_env(nullptr, top), top);
+  EXPECT_EQ(simd_level_from_env("sse2", top), SimdLevel::Baseline);
+  EXPECT_EQ(simd_level_from_env("baseline", top), SimdLevel::Baseline);
+  EXPECT_EQ(simd_level_from_env("avx2", top), std::min(SimdLevel::Avx2, top));
+  EXPECT_EQ(simd_level_from_env("avx512", top), top);
+  EXPECT_EQ(simd_level_from_env("", top), top);
+  // On processors of every level.
+  EXPECT_EQ(simd_level_from_env("avx2", SimdLevel::Avx512), SimdLevel::Avx2);
+  EXPECT_EQ(simd_level_from_env("avx2", SimdLevel::Baseline), SimdLevel::Baseline);
+  EXPECT_EQ(simd_level_from_env("avx512", SimdLevel::Avx2), SimdLevel::Avx2);
+  EXPECT_EQ(simd_level_from_env("sse2", SimdLevel::Avx512), SimdLevel::Baseline);
 }
 
 // z of the plane at pixel (px, py) as the block loop stores it (depth_values): the same double
@@ -288,8 +329,8 @@ TEST(SimdPaths, WholeBlockDepthRejectionIsExact) {
   std::uniform_real_distribution<double> unit(0.0, 1.0);
   const GLenum funcs[] = {GL_LESS, GL_LEQUAL, GL_GREATER, GL_GEQUAL, GL_EQUAL, GL_NEVER};
   int skipped_blocks = 0, drawn_blocks = 0;
-  for (SimdLevel level : {SimdLevel::Baseline, SimdLevel::Avx2}) {
-    if (level == SimdLevel::Avx2 && simd_level_supported() != SimdLevel::Avx2) continue;
+  for (SimdLevel level : {SimdLevel::Baseline, SimdLevel::Avx2, SimdLevel::Avx512}) {
+    if (level > simd_level_supported()) continue;
     set_simd_level(level);
     for (int bits : {16, 24, 32}) {
       for (GLenum func : funcs) {
