@@ -253,8 +253,7 @@ template <ColorFormat P> struct SmoothPlanes {
       dy[offs[c]] = in.color_w[c].dy;
     }
 #if PINEDA_BLOCK_AVX512
-    const f32x16 dx4 =
-        __builtin_shufflevector(dx, dx, 0, 1, 2, 3, 0, 1, 2, 3, 0, 1, 2, 3, 0, 1, 2, 3);
+    const f32x16 dx4 = _mm512_maskz_broadcast_f32x4(0xffff, dx);
     for (int k = 0; k < 2; ++k) {
       const auto p0 = static_cast<float>(4 * k), p1 = p0 + 1.0f, p2 = p0 + 2.0f, p3 = p0 + 3.0f;
       step[k] = f32x16{p0, p0, p0, p0, p1, p1, p1, p1, p2, p2, p2, p2, p3, p3, p3, p3} * dx4;
@@ -283,8 +282,9 @@ template <ColorFormat P>
 #if PINEDA_BLOCK_AVX512
   // Four pixels' channels in one vector, in memory order: converting each lane to a byte
   // (vpmovdb) leaves four packed pixels, two conversions the row.
-  const f32x16 cr4 =
-      __builtin_shufflevector(cr, cr, 0, 1, 2, 3, 0, 1, 2, 3, 0, 1, 2, 3, 0, 1, 2, 3);
+  // Broadcasts and lane permutes by intrinsic: GCC 12 widens a 128- or 256-bit vector with
+  // __builtin_shufflevector through the stack, and the 512-bit reload stalls on forwarding.
+  const f32x16 cr4 = _mm512_maskz_broadcast_f32x4(0xffff, cr);
   i32x16 px[2];
   if (sp.unit_w) {
     for (int k = 0; k < 2; ++k)
@@ -294,9 +294,12 @@ template <ColorFormat P>
     const float iwr = iw.v0 + fi * iw.dx + fj * iw.dy;
     const f32x8 lane = {0, 1, 2, 3, 4, 5, 6, 7};
     const f32x8 w = 1.0f / (iwr + lane * iw.dx);
+    const __m512 w16 = _mm512_maskz_broadcast_f32x8(0xffff, w);
     const f32x16 wk[2] = {
-        __builtin_shufflevector(w, w, 0, 0, 0, 0, 1, 1, 1, 1, 2, 2, 2, 2, 3, 3, 3, 3),
-        __builtin_shufflevector(w, w, 4, 4, 4, 4, 5, 5, 5, 5, 6, 6, 6, 6, 7, 7, 7, 7),
+        _mm512_maskz_permutexvar_ps(
+            0xffff, _mm512_setr_epi32(0, 0, 0, 0, 1, 1, 1, 1, 2, 2, 2, 2, 3, 3, 3, 3), w16),
+        _mm512_maskz_permutexvar_ps(
+            0xffff, _mm512_setr_epi32(4, 4, 4, 4, 5, 5, 5, 5, 6, 6, 6, 6, 7, 7, 7, 7), w16),
     };
     for (int k = 0; k < 2; ++k)
       px[k] = to_unorm8((cr4 + sp.step[k]) * wk[k]);
@@ -503,11 +506,18 @@ template <DepthPath D>
   const Row zv = depth_values(ctx, in.z, di, dj);
   const bool write = D != DepthPath::Generic || ctx.depth_write;
 #if PINEDA_BLOCK_AVX512
-  // Coverage and result as opmasks: the masked load and store touch only the covered pixels
-  // (masked-off lanes do not fault), so the last block of a row needs no other path.
+  // Coverage and result as opmasks, the stored values kept by a masked move. Rows inside the
+  // buffer are loaded and stored whole: masked stores are slow on Zen 4, and a masked store
+  // followed by a load of the same row cannot forward. The last block of a row whose width is
+  // not a multiple of 8 uses masked loads and stores (masked-off lanes do not fault).
   const __m256i z = reinterpret_cast<__m256i>(zv.v[0]);
-  const __m256i old = _mm256_maskz_loadu_epi32(static_cast<__mmask8>(m), d);
   const auto k = static_cast<__mmask8>(m);
+  const bool whole = bx + N <= ctx.fb_width;
+  __m256i old;
+  if (whole)
+    std::memcpy(&old, d, sizeof old);
+  else
+    old = _mm256_maskz_loadu_epi32(k, d);
   unsigned bits;
   if constexpr (D == DepthPath::LessWrite) {
     bits = _mm256_mask_cmplt_epu32_mask(k, z, old);
@@ -519,7 +529,14 @@ template <DepthPath D>
            (_mm256_mask_cmpeq_epu32_mask(k, z, old) & (0u - ((f >> 1) & 1u))) |
            (_mm256_mask_cmpgt_epu32_mask(k, z, old) & (0u - ((f >> 2) & 1u)));
   }
-  if (write && bits != 0) _mm256_mask_storeu_epi32(d, static_cast<__mmask8>(bits), z);
+  if (write && bits != 0) {
+    if (whole) {
+      const __m256i merged = _mm256_mask_mov_epi32(old, static_cast<__mmask8>(bits), z);
+      std::memcpy(d, &merged, sizeof merged);
+    } else {
+      _mm256_mask_storeu_epi32(d, static_cast<__mmask8>(bits), z);
+    }
+  }
   return bits;
 #else
   if (bx + N <= ctx.fb_width) {
@@ -743,10 +760,18 @@ template <ColorFormat F, ColorPath C, BlendPath B, bool X>
     return;
   }
 #if PINEDA_BLOCK_AVX512
-  // The coverage as an opmask: only covered pixels are read and written (masked-off lanes do
-  // not fault), so partial rows need no select and the last block of a row no other path.
-  static_cast<void>(in_buffer);
+  // The coverage as an opmask, the covered pixels kept by a masked move. Rows inside the
+  // buffer are loaded and stored whole (masked stores are slow on Zen 4, see depth_row); the
+  // last block of a row uses masked loads and stores.
   const auto k = static_cast<__mmask8>(m);
+  if (in_buffer) {
+    Row dst = row_load(row);
+    combine_row4<F, C, B>(ctx, m, logic, s, dst);
+    const __m256i out = _mm256_mask_mov_epi32(reinterpret_cast<__m256i>(dst.v[0]), k,
+                                              reinterpret_cast<__m256i>(s.v[0]));
+    std::memcpy(row, &out, sizeof out);
+    return;
+  }
   if (reads_dst) {
     Row dst;
     dst.v[0] = reinterpret_cast<u32x8>(_mm256_maskz_loadu_epi32(k, row));
