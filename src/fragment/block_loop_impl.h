@@ -227,6 +227,13 @@ template <ColorFormat P> void per_fragment_row(const float (*sc)[64], int j, Row
   }
 }
 
+#if PINEDA_BLOCK_AVX512
+// The channel (0 R, 1 G, 2 B, 3 A) stored at byte k of a pixel of layout L.
+template <class L> constexpr int channel_at(int k) {
+  return L::r == k ? 0 : L::g == k ? 1 : L::b == k ? 2 : 3;
+}
+#endif
+
 // The colour planes of a smoothly shaded primitive with lane k holding the channel stored at
 // byte k of a pixel in the packed format P, and each pixel's offset i * dx from its row's start:
 // set up once per block, so that a row is computed pixel by pixel with the four channels in
@@ -246,12 +253,26 @@ template <ColorFormat P> struct SmoothPlanes {
 
   void init(const FragInputs& in) {
     using L = Layout<P>;
+#if PINEDA_BLOCK_AVX512
+    // The channels put in place by a constant shuffle: with AVX-512, GCC 12 turns the stores
+    // to variable lanes of the loop below into scatters, which are slow and stall the loads
+    // that follow.
+    constexpr int at[4] = {channel_at<L>(0), channel_at<L>(1), channel_at<L>(2), channel_at<L>(3)};
+    const PlaneF* cw = in.color_w;
+    const f32x4 rv = {cw[0].v0, cw[1].v0, cw[2].v0, cw[3].v0};
+    const f32x4 rx = {cw[0].dx, cw[1].dx, cw[2].dx, cw[3].dx};
+    const f32x4 ry = {cw[0].dy, cw[1].dy, cw[2].dy, cw[3].dy};
+    v0 = __builtin_shufflevector(rv, rv, at[0], at[1], at[2], at[3]);
+    dx = __builtin_shufflevector(rx, rx, at[0], at[1], at[2], at[3]);
+    dy = __builtin_shufflevector(ry, ry, at[0], at[1], at[2], at[3]);
+#else
     const int offs[4] = {L::r, L::g, L::b, L::a};
     for (int c = 0; c < 4; ++c) {
       v0[offs[c]] = in.color_w[c].v0;
       dx[offs[c]] = in.color_w[c].dx;
       dy[offs[c]] = in.color_w[c].dy;
     }
+#endif
 #if PINEDA_BLOCK_AVX512
     const f32x16 dx4 = _mm512_maskz_broadcast_f32x4(0xffff, dx);
     for (int k = 0; k < 2; ++k) {
