@@ -2,9 +2,10 @@
 // BMI2: the AVX2 instances' code, plus the AVX-512 forms of the few functions that gain from
 // them (block_loop_impl.h, under PINEDA_BLOCK_AVX512): opmask registers for a row's coverage
 // and depth-test result instead of lane masks and blends, a row's eight depth values as one
-// 512-bit vector of doubles converted in one instruction (also for 32-bit buffers), and two
-// block rows in one 512-bit register where a loop walks the whole block. select_block_fn
-// (fragment_ops.cpp) takes them when simd_level() is Avx512 (simd_level.h).
+// 512-bit vector of doubles converted in one instruction (also for 32-bit buffers), the colours
+// of four pixels per 512-bit register narrowed to bytes with vpmovdb, and the over-blend of a
+// whole row in one register. A block is still walked one row of eight pixels at a time.
+// select_block_fn (fragment_ops.cpp) takes them when simd_level() is Avx512 (simd_level.h).
 //
 // As in fragment_ops_avx2.cpp, only the code defined between the target pragmas is compiled for
 // these extensions; every header is included before them. No FMA is enabled, so no a * b + c
