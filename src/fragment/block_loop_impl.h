@@ -62,6 +62,7 @@ using u16x16 = uint16_t __attribute__((vector_size(32)));
 #if PINEDA_BLOCK_AVX512
 using f32x16 = float __attribute__((vector_size(64)));
 using i32x16 = int32_t __attribute__((vector_size(64)));
+using u32x16 = uint32_t __attribute__((vector_size(64)));
 using f64x8 = double __attribute__((vector_size(64)));
 using u16x32 = uint16_t __attribute__((vector_size(64)));
 #endif
@@ -219,6 +220,26 @@ inline i32x16 to_unorm8(f32x16 v) {
 
 // One block row of the colours shade_block computed (ShadePath::PerFragment).
 template <ColorFormat P> void per_fragment_row(const float (*sc)[64], int j, Row& out) {
+#if PINEDA_BLOCK_AVX512
+  // Two channels per register (R and G, B and A, eight pixels each), each half shifted to its
+  // byte and the halves merged.
+  using L = Layout<P>;
+  const auto pair = [&](int c0, int c1) {
+    __m256 lo, hi;
+    std::memcpy(&lo, &sc[c0][8 * j], sizeof lo);
+    std::memcpy(&hi, &sc[c1][8 * j], sizeof hi);
+    return f32x16(
+        _mm512_mask_broadcast_f32x8(_mm512_maskz_broadcast_f32x8(0x00ff, lo), 0xff00, hi));
+  };
+  constexpr int sr = byte_shift(L::r), sg = byte_shift(L::g), sb = byte_shift(L::b),
+                sa = byte_shift(L::a);
+  const u32x16 shift_rg = {sr, sr, sr, sr, sr, sr, sr, sr, sg, sg, sg, sg, sg, sg, sg, sg};
+  const u32x16 shift_ba = {sb, sb, sb, sb, sb, sb, sb, sb, sa, sa, sa, sa, sa, sa, sa, sa};
+  const u32x16 t = (reinterpret_cast<u32x16>(to_unorm8(pair(0, 1))) << shift_rg) |
+                   (reinterpret_cast<u32x16>(to_unorm8(pair(2, 3))) << shift_ba);
+  out.v[0] = __builtin_shufflevector(t, t, 0, 1, 2, 3, 4, 5, 6, 7) |
+             __builtin_shufflevector(t, t, 8, 9, 10, 11, 12, 13, 14, 15);
+#else
   for (int h = 0; h < kParts; ++h) {
     LaneF ch[4];
     for (int c = 0; c < 4; ++c)
@@ -226,6 +247,7 @@ template <ColorFormat P> void per_fragment_row(const float (*sc)[64], int j, Row
     out.v[h] =
         pack_lanes<P>(to_unorm8(ch[0]), to_unorm8(ch[1]), to_unorm8(ch[2]), to_unorm8(ch[3]));
   }
+#endif
 }
 
 #if PINEDA_BLOCK_AVX512
