@@ -5,9 +5,11 @@
 #include <algorithm>
 #include <cstdint>
 #include <cstdlib>
+#include <new>
 
 #include "fragment/fragment_ops.h"
 #include "fragment/simd.h"
+#include "raster/bin.h"
 #include "raster/raster.h"
 #include "raster/setup.h"
 #include "raster/setup_shade.h"
@@ -194,12 +196,19 @@ void traverse(const TriEdges& te, const FragCtx& ctx, const FragInputs& in, Bloc
 // before the planes are set up (raster_triangle); larger ones go through traverse.
 constexpr int kSmallBox = 16;
 
-// Inlined into raster_triangle: with one-pixel triangles the call itself is a measurable part
-// of the cost.
-[[gnu::always_inline]] inline void triangle(const DrawCall& dc, const FragCtx& ctx,
-                                            const SnappedTri& t, const PVertex& a, const PVertex& b,
-                                            const PVertex& c, const PVertex& provoking,
-                                            bool back_facing) {
+// Triangle setup (GL 2.1 §3.5.1), shared by direct rasterization and binning (bin.h): the
+// edge functions and bounding box, the coverage of a triangle inside one block, and the
+// interpolation planes; the result goes to `out`, which either rasterizes it at once or keeps
+// it for the tiles. Out provides inputs() and shade_inputs() (storage for the planes) and
+// one_block() and traversed() (the set-up triangle).
+//
+// Inlined into its callers: with one-pixel triangles the call itself is a measurable part of
+// the cost.
+template <class Out>
+[[gnu::always_inline]] inline void
+setup_triangle(const DrawCall& dc, const FragCtx& ctx, const SnappedTri& t, const PVertex& a,
+               const PVertex& b, const PVertex& c, const PVertex& provoking, bool back_facing,
+               Out& out) {
   if (ctx.noop) return;
   if (dc.bands.count > 1) {
     // Another worker draws the whole triangle: skip its setup. Pixel centres inside lie in
@@ -234,28 +243,106 @@ constexpr int kSmallBox = 16;
   }
   // GL 2.1 §2.14.1: with two-sided lighting a back-facing polygon takes the back colours.
   const int slot = (rs.two_sided && back_facing) ? kAttrBackColor : kAttrColor;
-  FragInputs in;
+  FragInputs& in = out.inputs();
   const PlaneSetup ps = make_plane_setup(t);
-  const ShadePath shade = setup_triangle_inputs(ctx, ps, a, b, c, provoking, rs.flat, slot, in);
+  ShadePath shade = setup_triangle_inputs(ctx, ps, a, b, c, provoking, rs.flat, slot, in);
   // GL 2.1 §3.5.5: the offset moves the whole depth plane (the fragment stage clamps).
   if (modes.offset_fill && ctx.needs_depth)
     in.z.v0 += polygon_offset_depth(modes, in.z.dx, in.z.dy, ctx.depth_max);
-  const auto run = [&](ShadePath path) {
-    const BlockFn fn = ctx.fn[static_cast<int>(path)];
-    if (one_block)
-      fn(ctx, in, bx, by, mask);
-    else if (modes.polygon_stipple)
-      traverse<true>(te, ctx, in, fn, modes.polygon_stipple_rows, dc.bands);
-    else
-      traverse<false>(te, ctx, in, fn, nullptr, dc.bands);
-  };
-  if (ctx.shade == nullptr) return run(shade);
-  // Texturing and fog (fragment/shade.h): their planes exist only for the draws that use them.
-  ShadeInputs si;
-  setup_shade_triangle(*ctx.shade, ps, a, b, c, provoking, rs.flat, slot, si);
-  in.shade = &si;
-  run(ShadePath::PerFragment);
+  if (ctx.shade != nullptr) {
+    // Texturing and fog (fragment/shade.h): their planes exist only for the draws that use
+    // them.
+    ShadeInputs& si = out.shade_inputs();
+    setup_shade_triangle(*ctx.shade, ps, a, b, c, provoking, rs.flat, slot, si);
+    in.shade = &si;
+    shade = ShadePath::PerFragment;
+  }
+  const BlockFn fn = ctx.fn[static_cast<int>(shade)];
+  if (one_block)
+    out.one_block(in, fn, bx, by, mask);
+  else
+    out.traversed(te, in, fn);
 }
+
+// Straight to the fragment stage, within the rows of dc.bands. The planes' storage is
+// constructed only when setup reaches them: most one-pixel triangles cover no pixel centre,
+// and most draws have no texturing or fog.
+struct DirectOut {
+  DirectOut(const DrawCall& d, const FragCtx& c) : dc(d), ctx(c) {}
+  const DrawCall& dc;
+  const FragCtx& ctx;
+  alignas(FragInputs) unsigned char in[sizeof(FragInputs)];
+  alignas(ShadeInputs) unsigned char si[sizeof(ShadeInputs)];
+
+  FragInputs& inputs() { return *new (in) FragInputs; }
+  ShadeInputs& shade_inputs() { return *new (si) ShadeInputs; }
+  void one_block(const FragInputs& fi, BlockFn fn, int bx, int by, uint64_t mask) {
+    fn(ctx, fi, bx, by, mask);
+  }
+  void traversed(const TriEdges& te, const FragInputs& fi, BlockFn fn) {
+    const RasterModes& modes = dc.state->modes;
+    if (modes.polygon_stipple)
+      traverse<true>(te, ctx, fi, fn, modes.polygon_stipple_rows, dc.bands);
+    else
+      traverse<false>(te, ctx, fi, fn, nullptr, dc.bands);
+  }
+};
+
+[[gnu::always_inline]] inline void triangle(const DrawCall& dc, const FragCtx& ctx,
+                                            const SnappedTri& t, const PVertex& a, const PVertex& b,
+                                            const PVertex& c, const PVertex& provoking,
+                                            bool back_facing) {
+  DirectOut out(dc, ctx);
+  setup_triangle(dc, ctx, t, a, b, c, provoking, back_facing, out);
+}
+
+// Into the bins of a binned draw (bin.h): one record, linked into every tile that the
+// bounding box reaches and no edge excludes.
+struct BinOut {
+  TriBins& bins;
+  uint32_t tri = kNoIndex;
+
+  FragInputs& inputs() {
+    tri = static_cast<uint32_t>(bins.tris.size());
+    return bins.tris.emplace_back().in;
+  }
+  ShadeInputs& shade_inputs() {
+    bins.tris[tri].shade_index = static_cast<uint32_t>(bins.shades.size());
+    return bins.shades.emplace_back();
+  }
+  void one_block(const FragInputs&, BlockFn fn, int bx, int by, uint64_t mask) {
+    BinnedTri& r = bins.tris[tri];
+    r.fn = fn;
+    r.mask = mask;
+    r.bx = bx;
+    r.by = by;
+    bins.add(tri, bx >> kTileShiftX, by >> kTileShiftY);
+  }
+  void traversed(const TriEdges& te, const FragInputs&, BlockFn fn) {
+    BinnedTri& r = bins.tris[tri];
+    r.fn = fn;
+    r.edge_index = static_cast<uint32_t>(bins.edges.size());
+    bins.edges.push_back(te);
+    const int tx0 = te.minx >> kTileShiftX, tx1 = te.maxx >> kTileShiftX;
+    const int ty0 = te.miny >> kTileShiftY, ty1 = te.maxy >> kTileShiftY;
+    if (tx0 == tx1 && ty0 == ty1) return bins.add(tri, tx0, ty0);
+    // A tile is skipped when some edge function is negative all over it: at the tile's
+    // corner pixel where it is largest (as traverse does for blocks).
+    int64_t reject_off[3];
+    for (int i = 0; i < 3; ++i)
+      reject_off[i] = std::max<int64_t>(te.e[i].sx * (kTileW - 1), 0) +
+                      std::max<int64_t>(te.e[i].sy * (kTileH - 1), 0);
+    for (int ty = ty0; ty <= ty1; ++ty)
+      for (int tx = tx0; tx <= tx1; ++tx) {
+        bool out = false;
+        for (int i = 0; i < 3; ++i)
+          out |= te.e[i].base + int64_t{tx} * kTileW * te.e[i].sx +
+                     int64_t{ty} * kTileH * te.e[i].sy + reject_off[i] <
+                 0;
+        if (!out) bins.add(tri, tx, ty);
+      }
+  }
+};
 
 } // namespace
 
@@ -266,6 +353,67 @@ void raster_triangle(const DrawCall& dc, const PVertex& a, const PVertex& b, con
   FragCtx ctx;
   prepare_fragments(*dc.state, *dc.fb, ctx);
   triangle(dc, ctx, t, a, b, c, provoking, back_facing);
+}
+
+void bin_triangle(TriBins& bins, const DrawCall& dc, const SnappedTri& t, const PVertex& a,
+                  const PVertex& b, const PVertex& c, const PVertex& provoking, bool back_facing) {
+  BinOut out{bins};
+  setup_triangle(dc, *dc.frag, t, a, b, c, provoking, back_facing, out);
+}
+
+void raster_tile(const DrawCall& dc, const FragCtx& ctx, const TriBins* const* bins, int n,
+                 int tile) {
+  const TileGrid& grid = bins[0]->grid;
+  const int x0 = (tile % grid.tiles_x) * kTileW, y0 = (tile / grid.tiles_x) * kTileH;
+  const RasterModes& modes = dc.state->modes;
+  const auto t = static_cast<size_t>(tile);
+  for (int k = 0; k < n; ++k) {
+    const TriBins& b = *bins[k];
+    for (uint32_t e = b.head[t]; e != kNoIndex; e = b.entries[e].next) {
+      const BinnedTri& r = b.tris[b.entries[e].tri];
+      if (r.bx >= 0) {
+        r.fn(ctx, r.in, r.bx, r.by, r.mask);
+        continue;
+      }
+      // The triangle within the tile: the tile's edges are block edges, so every block of the
+      // tile gets the coverage it gets in the whole triangle's traversal.
+      TriEdges te = b.edges[r.edge_index];
+      te.minx = std::max(te.minx, x0);
+      te.miny = std::max(te.miny, y0);
+      te.maxx = std::min(te.maxx, x0 + kTileW - 1);
+      te.maxy = std::min(te.maxy, y0 + kTileH - 1);
+      if (modes.polygon_stipple)
+        traverse<true>(te, ctx, r.in, r.fn, modes.polygon_stipple_rows, Bands{});
+      else
+        traverse<false>(te, ctx, r.in, r.fn, nullptr, Bands{});
+    }
+  }
+}
+
+void TriBins::reset(const TileGrid& g) {
+  const auto tiles = static_cast<size_t>(g.count());
+  if (g.tiles_x != grid.tiles_x || g.tiles_y != grid.tiles_y || head.size() != tiles) {
+    grid = g;
+    head.assign(tiles, kNoIndex);
+    tail.assign(tiles, kNoIndex);
+  } else {
+    // Only the tiles of the last batch hold entries.
+    for (int ty = ty0; ty <= ty1; ++ty)
+      for (int tx = tx0; tx <= tx1; ++tx)
+        head[static_cast<size_t>(ty * grid.tiles_x + tx)] = kNoIndex;
+  }
+  tx0 = ty0 = 1 << 30;
+  tx1 = ty1 = -1;
+  tris.clear();
+  edges.clear();
+  shades.clear();
+  entries.clear();
+}
+
+void TriBins::link_shades() {
+  if (shades.empty()) return;
+  for (BinnedTri& r : tris)
+    if (r.shade_index != kNoIndex) r.in.shade = &shades[r.shade_index];
 }
 
 void raster_triangle_snapped(const DrawCall& dc, const SnappedTri& t, const PVertex& a,

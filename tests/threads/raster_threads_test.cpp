@@ -1,6 +1,7 @@
-// Rasterization on worker threads (issue 6, src/raster/workers.h): a context with
-// PINEDA_THREADS=2, 3 or 5 must produce the same colour, depth and stencil buffers, byte for
-// byte, and the same occlusion query counts as one with PINEDA_THREADS=1, which draws
+// Rasterization on worker threads (issue 6, src/raster/workers.h, src/raster/bin.h): a context with
+// PINEDA_THREADS=2, 3 or 5, sharing triangles by bands or by bins (PINEDA_RASTER), must
+// produce the same colour, depth and stencil buffers, byte for byte, and the same occlusion
+// query counts as one with PINEDA_THREADS=1, which draws
 // everything on the calling thread. The scenes make the draws large enough to be shared and
 // cover every rasterizer path: triangles (smooth, flat, textured, fog, polygon stipple, offset,
 // outlined polygons), aliased, wide, stippled and smooth lines, aliased and smooth points,
@@ -439,10 +440,83 @@ void scene_queries(Rng& rng, std::vector<GLuint>& samples) {
   glDisable(GL_DEPTH_TEST);
 }
 
-// Renders scene `which` in a new context with PINEDA_THREADS=threads.
-Result render(int which, int threads) {
+// Binned draws (src/raster/bin.h) of every triangle mode: vertex arrays drawn with
+// DrawArrays and DrawElements as strips, fans, quad strips and polygons spanning many tiles,
+// two-sided lighting with front faces culled, and 12000 small triangles in one draw (several
+// batches of setup for any thread count up to five).
+void scene_triangle_modes(Rng& rng) {
+  clear_all(0, 0, 0);
+  glEnable(GL_DEPTH_TEST);
+  std::vector<float> pos, col;
+  const auto vertex = [&](float x, float y, float z) {
+    pos.insert(pos.end(), {x, y, z});
+    col.insert(col.end(), {rng.unit(), rng.unit(), rng.unit(), 1.0f});
+  };
+  for (int i = 0; i < 36000; ++i) {
+    const float x = rng.range(-10, kW + 10), y = rng.range(-10, kH + 10);
+    vertex(x + rng.range(-4, 4), y + rng.range(-4, 4), rng.range(-1, 1));
+  }
+  glEnableClientState(GL_VERTEX_ARRAY);
+  glEnableClientState(GL_COLOR_ARRAY);
+  glVertexPointer(3, GL_FLOAT, 0, pos.data());
+  glColorPointer(4, GL_FLOAT, 0, col.data());
+  glDrawArrays(GL_TRIANGLES, 0, 36000);
+  // A zigzag strip and a quad strip across the window, a fan and a polygon around its centre.
+  pos.clear();
+  col.clear();
+  for (int i = 0; i < 400; ++i)
+    vertex(static_cast<float>(i) * kW / 399.0f,
+           (i & 1) ? kH - rng.range(0, 100) : rng.range(0, 100), rng.range(-0.9f, 0.9f));
+  glVertexPointer(3, GL_FLOAT, 0, pos.data());
+  glColorPointer(4, GL_FLOAT, 0, col.data());
+  glDrawArrays(GL_TRIANGLE_STRIP, 0, 400);
+  std::vector<GLuint> reversed(400);
+  for (GLuint i = 0; i < 400; ++i)
+    reversed[i] = 399 - i;
+  glDrawElements(GL_QUAD_STRIP, 400, GL_UNSIGNED_INT, reversed.data());
+  pos.clear();
+  col.clear();
+  vertex(kW / 2.0f, kH / 2.0f, 0.5f);
+  for (int i = 0; i <= 600; ++i) {
+    const float a = static_cast<float>(i) * 6.2831853f / 600.0f;
+    const float r = rng.range(200, 500);
+    vertex(kW / 2.0f + r * std::cos(a), kH / 2.0f + r * std::sin(a), rng.range(-0.5f, 0.9f));
+  }
+  glVertexPointer(3, GL_FLOAT, 0, pos.data());
+  glColorPointer(4, GL_FLOAT, 0, col.data());
+  glDrawArrays(GL_TRIANGLE_FAN, 0, 602);
+  glDrawArrays(GL_POLYGON, 1, 601);
+  glDisableClientState(GL_COLOR_ARRAY);
+  // Two-sided lighting, front faces culled: the back faces take the back material.
+  glEnable(GL_LIGHTING);
+  glEnable(GL_LIGHT0);
+  glLightModeli(GL_LIGHT_MODEL_TWO_SIDE, GL_TRUE);
+  const float front[4] = {1, 0, 0, 1}, back[4] = {0, 0.5f, 1, 1};
+  glMaterialfv(GL_FRONT, GL_DIFFUSE, front);
+  glMaterialfv(GL_BACK, GL_DIFFUSE, back);
+  glEnable(GL_CULL_FACE);
+  glCullFace(GL_FRONT);
+  glNormal3f(0, 0, 1);
+  glBegin(GL_TRIANGLES);
+  for (int i = 0; i < 2000; ++i) {
+    const float x = rng.range(0, kW), y = rng.range(0, kH), z = rng.range(-0.95f, 0.95f);
+    for (int k = 0; k < 3; ++k)
+      glVertex3f(x + rng.range(-40, 40), y + rng.range(-40, 40), z);
+  }
+  glEnd();
+  glDisable(GL_CULL_FACE);
+  glLightModeli(GL_LIGHT_MODEL_TWO_SIDE, GL_FALSE);
+  glDisable(GL_LIGHT0);
+  glDisable(GL_LIGHTING);
+  glDisableClientState(GL_VERTEX_ARRAY);
+  glDisable(GL_DEPTH_TEST);
+}
+
+// Renders scene `which` in a new context with PINEDA_THREADS=threads and PINEDA_RASTER=raster.
+Result render(int which, int threads, const char* raster = "bands") {
   Result r;
   setenv("PINEDA_THREADS", std::to_string(threads).c_str(), 1);
+  setenv("PINEDA_RASTER", raster, 1);
   const int tasks_before = task_count();
   r.color.assign(static_cast<size_t>(kW) * kH * 4, 0);
   OSMesaContext ctx = OSMesaCreateContextExt(OSMESA_RGBA, 24, 8, 0, nullptr);
@@ -474,6 +548,9 @@ Result render(int which, int threads) {
   case 6:
     scene_textured(rng);
     break;
+  case 8:
+    scene_triangle_modes(rng);
+    break;
   default:
     scene_queries(rng, r.samples);
     break;
@@ -493,6 +570,7 @@ Result render(int which, int threads) {
   OSMesaDestroyContext(ctx);
   r.threads_left = task_count() - tasks_before;
   unsetenv("PINEDA_THREADS");
+  unsetenv("PINEDA_RASTER");
   return r;
 }
 
@@ -504,8 +582,9 @@ long first_difference(const std::vector<uint8_t>& a, const std::vector<uint8_t>&
   return -1;
 }
 
-constexpr const char* kSceneNames[] = {"triangles", "blend",         "stencil",  "lines",
-                                       "points",    "polygon_modes", "textured", "queries"};
+constexpr const char* kSceneNames[] = {"triangles", "blend",   "stencil",
+                                       "lines",     "points",  "polygon_modes",
+                                       "textured",  "queries", "triangle_modes"};
 
 class RasterThreads : public testing::TestWithParam<int> {};
 
@@ -517,23 +596,26 @@ TEST_P(RasterThreads, SameBuffersAndCountsForAnyThreadCount) {
   if (which == 7) {
     EXPECT_EQ(one.samples.size(), 4u);
   }
-  for (int threads : {2, 3, 5}) {
-    const Result r = render(which, threads);
-    ASSERT_EQ(r.error, static_cast<GLenum>(GL_NO_ERROR)) << threads;
-    // The context's workers were started (the scene has shared draws) and are joined when it
-    // is destroyed.
-    EXPECT_EQ(r.threads_started, threads - 1) << threads;
-    EXPECT_EQ(r.threads_left, 0) << threads;
-    const long c = first_difference(one.color, r.color);
-    EXPECT_EQ(c, -1) << "colour differs with " << threads << " threads at pixel " << (c / 4) % kW
-                     << "," << (c / 4) / kW;
-    EXPECT_EQ(first_difference(one.depth, r.depth), -1) << "depth, " << threads << " threads";
-    EXPECT_EQ(first_difference(one.stencil, r.stencil), -1) << "stencil, " << threads << " threads";
-    EXPECT_EQ(one.samples, r.samples) << threads << " threads";
-  }
+  for (int threads : {2, 3, 5})
+    for (const char* raster : {"bands", "bins"}) {
+      SCOPED_TRACE(raster);
+      const Result r = render(which, threads, raster);
+      ASSERT_EQ(r.error, static_cast<GLenum>(GL_NO_ERROR)) << threads;
+      // The context's workers were started (the scene has shared draws) and are joined when it
+      // is destroyed.
+      EXPECT_EQ(r.threads_started, threads - 1) << threads;
+      EXPECT_EQ(r.threads_left, 0) << threads;
+      const long c = first_difference(one.color, r.color);
+      EXPECT_EQ(c, -1) << "colour differs with " << threads << " threads at pixel " << (c / 4) % kW
+                       << "," << (c / 4) / kW;
+      EXPECT_EQ(first_difference(one.depth, r.depth), -1) << "depth, " << threads << " threads";
+      EXPECT_EQ(first_difference(one.stencil, r.stencil), -1)
+          << "stencil, " << threads << " threads";
+      EXPECT_EQ(one.samples, r.samples) << threads << " threads";
+    }
 }
 
-INSTANTIATE_TEST_SUITE_P(Scenes, RasterThreads, testing::Range(0, 8),
+INSTANTIATE_TEST_SUITE_P(Scenes, RasterThreads, testing::Range(0, 9),
                          [](const testing::TestParamInfo<int>& param_info) {
                            return std::string(kSceneNames[param_info.param]);
                          });
