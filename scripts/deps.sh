@@ -16,6 +16,9 @@ PACKAGES=(
   libx11-dev libxext-dev # GLX over Xlib, presenting with MIT-SHM (XShm)
   xvfb mesa-utils        # GLX tests: a private X server; unmodified glxinfo
   libglfw3-dev           # GLX tests: an unmodified GLFW program; the demos (demos/)
+  libxrandr-dev          # GLFW/glfw3native.h includes X11/extensions/Xrandr.h (tests/glx)
+  glslang-dev glslang-tools # GLSL front end (static libraries) and glslangValidator
+  libglvnd-core-dev libegl-dev # glvnd's vendor ABI headers (GLX, EGL); EGL/eglext.h
   freeglut3-dev          # tests/programs: a freeglut program on Pineda
   piglit                 # scripts/piglit.sh: the external GL 1.x test list (not in the test run)
   python3-matplotlib     # scripts/sweep.sh, scaling.sh: charts (run with /usr/bin/python3)
