@@ -26,6 +26,7 @@
 #include "state/raster_mode_state.h"
 #include "state/select.h"
 #include "state/eval_state.h"
+#include "core/limits.h"
 
 namespace pineda {
 
@@ -37,10 +38,11 @@ enum DirtyBit : uint32_t {
   kDirtyPolygon = 1u << 3,     // culling, front face, polygon mode, shade model
   kDirtyFragment = 1u << 4,    // depth, blend, colour mask
   kDirtyFramebuffer = 1u << 5, // the drawable changed
-  kDirtyTexture = 1u << 6,     // texture enables, bindings, objects, environment, coordinate generation
-  kDirtyFog = 1u << 7,         // fog state, fog coordinate source
-  kDirtyRasterMode = 1u << 8,  // line width/stipple/smooth, point size/parameters, polygon offset/stipple
-  kDirtyPixel = 1u << 9,       // pixel transfer, pixel maps, pixel zoom
+  kDirtyTexture = 1u << 6, // texture enables, bindings, objects, environment, coordinate generation
+  kDirtyFog = 1u << 7,     // fog state, fog coordinate source
+  kDirtyRasterMode =
+      1u << 8,           // line width/stipple/smooth, point size/parameters, polygon offset/stipple
+  kDirtyPixel = 1u << 9, // pixel transfer, pixel maps, pixel zoom
   kDirtyRenderMode = 1u << 10, // glRenderMode, feedback/selection buffers, active queries
   kDirtyLighting = 1u << 16,   // lighting state, or normalize / rescale-normal enables
   kDirtyAll = 0xffffffffu,
@@ -60,10 +62,10 @@ struct ClientArray {
   bool enabled = false;
   GLint size = 4;
   GLenum type = GL_FLOAT;
-  GLsizei stride = 0;          // as given; 0 means tightly packed
+  GLsizei stride = 0; // as given; 0 means tightly packed
   const void* pointer = nullptr;
-  GLuint buffer = 0;           // GL_ARRAY_BUFFER_BINDING captured at glXxxPointer time
-  GLsizei count_ext = 0;       // EXT_vertex_array's count (src/state/ext_commands.cpp)
+  GLuint buffer = 0;     // GL_ARRAY_BUFFER_BINDING captured at glXxxPointer time
+  GLsizei count_ext = 0; // EXT_vertex_array's count (src/state/ext_commands.cpp)
 };
 
 struct VertexArrays {
@@ -141,13 +143,6 @@ enum ColorBufferBit : uint32_t {
 };
 
 constexpr GLenum kOutsideBeginEnd = 0xffffffffu;
-constexpr int kMaxClipPlanes = 6;
-constexpr size_t kModelviewStackDepth = 32;
-constexpr size_t kProjectionStackDepth = 32;
-constexpr size_t kTextureStackDepth = 10;
-constexpr size_t kClientAttribStackDepth = 16;
-constexpr int kMaxViewportDim = 16384;
-constexpr size_t kAttribStackDepth = 16; // MAX_ATTRIB_STACK_DEPTH, at least 16 (Table 6.33)
 
 // What glPushAttrib saves (GL 2.1 §6.1.14): one member per attribute group of the state tables'
 // "attribute" column, filled only for the groups in `mask`. Groups whose state Pineda does not
@@ -209,20 +204,20 @@ struct AttribFrame {
     GLenum perspective, point_smooth, line_smooth, polygon_smooth, fog, generate_mipmap,
         texture_compression;
   } hints{};
-  bool color_sum = false; // fog: the COLOR_SUM enable (Table 6.11)
+  bool color_sum = false;        // fog: the COLOR_SUM enable (Table 6.11)
   GLenum read_buffer = GL_FRONT; // pixel (Table 6.27)
   TexPipeAttrib texpipe; // texture environment/generation/enables, fog (src/state/texenv.cpp)
   RasterModeAttrib raster_modes{}; // line, point, polygon stipple/offset/smooth (raster_modes.cpp)
-  float accum_clear[4] = {};     // accum-buffer (Table 6.22)
-  GLuint list_base = 0;          // list (Table 6.31)
+  float accum_clear[4] = {};       // accum-buffer (Table 6.22)
+  GLuint list_base = 0;            // list (Table 6.31)
   struct PixelMode { // pixel (Tables 6.24-6.27): the transfer modes and zoom, not the maps
     bool map_color, map_stencil;
     int index_shift, index_offset;
     float scale[4], bias[4], depth_scale, depth_bias, zoom_x, zoom_y;
   } pixel{};
   TextureAttrib texture_objects{}; // texture: bindings, object parameters (texture_object.cpp)
-  MiscState misc{}; // colour index, multisample (color_index.cpp, multisample.cpp)
-  EvalAttrib eval; // eval and the evaluator enables (src/state/eval.cpp)
+  MiscState misc{};                // colour index, multisample (color_index.cpp, multisample.cpp)
+  EvalAttrib eval;                 // eval and the evaluator enables (src/state/eval.cpp)
 };
 
 struct DrawCache;
@@ -269,10 +264,9 @@ struct Context {
   GLenum matrix_mode = GL_MODELVIEW;
   MatrixStack modelview{kModelviewStackDepth};
   MatrixStack projection{kProjectionStackDepth};
-  MatrixStack texture[kMaxTexUnits] = {MatrixStack(kTextureStackDepth),
-                                       MatrixStack(kTextureStackDepth),
-                                       MatrixStack(kTextureStackDepth),
-                                       MatrixStack(kTextureStackDepth)};
+  MatrixStack texture[kMaxTexUnits] = {
+      MatrixStack(kTextureStackDepth), MatrixStack(kTextureStackDepth),
+      MatrixStack(kTextureStackDepth), MatrixStack(kTextureStackDepth)};
   GLuint active_texture = 0; // GL_TEXTUREi - GL_TEXTURE0
   GLint vp_x = 0, vp_y = 0;
   GLsizei vp_w = 0, vp_h = 0;
@@ -377,9 +371,9 @@ struct Context {
   // The per-draw setup kept across draws (geometry/draw_cache.h, transform.cpp); made at the
   // first draw.
   std::unique_ptr<DrawCache> draw_cache;
-  glm::mat4 mvp{1.0f};         // projection * modelview
+  glm::mat4 mvp{1.0f}; // projection * modelview
   bool modelview_identity = true;
-  bool need_eye = false;       // eye coordinates needed (user clip planes)
+  bool need_eye = false; // eye coordinates needed (user clip planes)
 
   // Scratch space reused across draws so the hot path does not allocate.
   std::vector<InputVertex> fetch_scratch;
@@ -396,6 +390,8 @@ Context* current_context();
 void set_current_context(Context* ctx);
 
 // Mark derived state stale.
-inline void mark_dirty(Context* ctx, uint32_t bits) { ctx->dirty |= bits; }
+inline void mark_dirty(Context* ctx, uint32_t bits) {
+  ctx->dirty |= bits;
+}
 
 } // namespace pineda

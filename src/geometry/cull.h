@@ -8,7 +8,7 @@
 #include <cstdint>
 
 #include "geometry/clip.h"
-#include "geometry/vertex.h"
+#include "core/vertex.h"
 #include "raster/raster.h"
 
 namespace pineda {

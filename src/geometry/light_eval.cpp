@@ -8,7 +8,7 @@
 #include <glm/mat3x3.hpp>
 #include <glm/matrix.hpp>
 
-#include "geometry/vertex.h"
+#include "core/vertex.h"
 
 namespace pineda {
 

@@ -12,7 +12,7 @@
 #include "core/context.h"
 #include "geometry/clip.h"
 #include "geometry/light_eval.h"
-#include "geometry/vertex.h"
+#include "core/vertex.h"
 
 namespace pineda {
 

@@ -16,7 +16,7 @@
 #include "core/context.h"
 #include "geometry/clip.h"
 #include "geometry/light_eval.h"
-#include "geometry/vertex.h"
+#include "core/vertex.h"
 
 #if defined(__SSE2__)
 #include <immintrin.h>

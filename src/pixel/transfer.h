@@ -7,11 +7,9 @@
 
 #include <cstddef>
 #include <cstdint>
+#include "core/limits.h"
 
 namespace pineda {
-
-// GL_MAX_PIXEL_MAP_TABLE: at least 32 (§3.6.3); 256 like Mesa.
-constexpr int kMaxPixelMapTable = 256;
 
 // The ten maps of Table 3.3, in the order of their enums (GL_PIXEL_MAP_I_TO_I .. _A_TO_A are
 // consecutive).

@@ -6,6 +6,7 @@
 #include "core/api_util.h"
 #include "dispatch.h"
 #include "framebuffer/read_pixels.h"
+#include "raster/schedule.h"
 
 namespace pineda {
 
@@ -39,18 +40,29 @@ void pixel_store(const char* func, GLenum pname, double value) {
   const double v = std::isnan(value) ? -1.0 : std::clamp(value, -2147483648.0, 2147483647.0);
   const int iv = static_cast<int>(v < 0 ? -std::floor(-v + 0.5) : std::floor(v + 0.5));
   switch (base) {
-  case GL_UNPACK_SWAP_BYTES: ps->swap_bytes = value != 0.0; return;
-  case GL_UNPACK_LSB_FIRST: ps->lsb_first = value != 0.0; return;
-  default: break;
+  case GL_UNPACK_SWAP_BYTES:
+    ps->swap_bytes = value != 0.0;
+    return;
+  case GL_UNPACK_LSB_FIRST:
+    ps->lsb_first = value != 0.0;
+    return;
+  default:
+    break;
   }
   if (iv < 0) {
     record_error(ctx, GL_INVALID_VALUE, func);
     return;
   }
   switch (base) {
-  case GL_UNPACK_ROW_LENGTH: ps->row_length = iv; break;
-  case GL_UNPACK_SKIP_ROWS: ps->skip_rows = iv; break;
-  case GL_UNPACK_SKIP_PIXELS: ps->skip_pixels = iv; break;
+  case GL_UNPACK_ROW_LENGTH:
+    ps->row_length = iv;
+    break;
+  case GL_UNPACK_SKIP_ROWS:
+    ps->skip_rows = iv;
+    break;
+  case GL_UNPACK_SKIP_PIXELS:
+    ps->skip_pixels = iv;
+    break;
   case GL_UNPACK_ALIGNMENT:
     if (iv != 1 && iv != 2 && iv != 4 && iv != 8) {
       record_error(ctx, GL_INVALID_VALUE, func);
@@ -59,10 +71,15 @@ void pixel_store(const char* func, GLenum pname, double value) {
     ps->alignment = iv;
     break;
   case GL_PACK_IMAGE_HEIGHT:
-  case GL_UNPACK_IMAGE_HEIGHT: ps->image_height = iv; break;
+  case GL_UNPACK_IMAGE_HEIGHT:
+    ps->image_height = iv;
+    break;
   case GL_PACK_SKIP_IMAGES:
-  case GL_UNPACK_SKIP_IMAGES: ps->skip_images = iv; break;
-  default: break;
+  case GL_UNPACK_SKIP_IMAGES:
+    ps->skip_images = iv;
+    break;
+  default:
+    break;
   }
 }
 
@@ -92,17 +109,18 @@ void GLAPIENTRY Clear(GLbitfield mask) {
   cs.stencil = ctx->clear_stencil;
   cs.stencil_writemask = ctx->stencil_writemask;
   cs.scissor_test = ctx->scissor_test;
-  for (int i = 0; i < 4; ++i) cs.scissor[i] = ctx->scissor_box[i];
+  for (int i = 0; i < 4; ++i)
+    cs.scissor[i] = ctx->scissor_box[i];
   // GL 2.1 §4.2.3: clearing a buffer that does not exist has no effect.
   GLbitfield m = mask & GL_COLOR_BUFFER_BIT;
   if (ctx->fb.depth != nullptr) m |= mask & GL_DEPTH_BUFFER_BIT;
   if (ctx->fb.stencil != nullptr) m |= mask & GL_STENCIL_BUFFER_BIT;
-  if (m != 0) clear_buffers(ctx->fb, cs, m, &ctx->workers);
+  if (m != 0) clear_buffers_shared(&ctx->workers, ctx->fb, cs, m);
   // GL 2.1 §4.2.3: with FRONT_AND_BACK both colour buffers are cleared.
   if ((m & GL_COLOR_BUFFER_BIT) && ctx->fb.color_also != nullptr) {
     Framebuffer second = ctx->fb;
     second.color = second.color_also;
-    clear_buffers(second, cs, GL_COLOR_BUFFER_BIT, &ctx->workers);
+    clear_buffers_shared(&ctx->workers, second, cs, GL_COLOR_BUFFER_BIT);
   }
 }
 
@@ -122,7 +140,8 @@ void GLAPIENTRY ClearStencil(GLint s) {
 void GLAPIENTRY ColorMask(GLboolean r, GLboolean g, GLboolean b, GLboolean a) {
   PINEDA_CTX_OUTSIDE("glColorMask");
   const bool m[4] = {r != GL_FALSE, g != GL_FALSE, b != GL_FALSE, a != GL_FALSE};
-  for (int i = 0; i < 4; ++i) ctx->color_mask[i] = m[i];
+  for (int i = 0; i < 4; ++i)
+    ctx->color_mask[i] = m[i];
   mark_dirty(ctx, kDirtyFragment);
 }
 

@@ -10,11 +10,9 @@
 #include <map>
 #include <memory>
 #include <vector>
+#include "core/limits.h"
 
 namespace pineda {
-
-// MAX_LIST_NESTING (Table 6.37): GL 2.1 §5.4 requires at least 64.
-constexpr int kMaxListNesting = 64;
 
 // Data a list owns besides its command stream (compiled vertex blocks, CallLists offsets);
 // the stream refers to it by address.

@@ -6,11 +6,9 @@
 
 #include <memory>
 #include <vector>
+#include "core/limits.h"
 
 namespace pineda {
-
-// MAX_EVAL_ORDER: at least 8 (§5.1); 30 as Mesa.
-constexpr GLint kMaxEvalOrder = 30;
 
 // The map kinds in the order of their enums: MAP1_COLOR_4 (0x0D90) .. MAP1_VERTEX_4 (0x0D98),
 // and likewise MAP2_COLOR_4 (0x0DB0) .. MAP2_VERTEX_4 (0x0DB8).

@@ -7,10 +7,9 @@
 
 #include <cstdint>
 #include <vector>
+#include "core/limits.h"
 
 namespace pineda {
-
-constexpr int kMaxLights = 8;
 
 // Material parameters of one face (GL 2.1 Table 2.10).
 struct Material {
@@ -47,15 +46,15 @@ struct MaterialChange {
 struct LightConstants {
   float ambient[3] = {}, diffuse[3] = {}, specular[3] = {};
   bool positional = false;
-  float position[3] = {};     // positional: the light's eye position
-  float direction[3] = {};    // directional: VPpli, the unit vector towards the light
-  float half[3] = {};         // directional with an infinite viewer: the unit half vector
-  bool spot = false;          // cutoff != 180
+  float position[3] = {};       // positional: the light's eye position
+  float direction[3] = {};      // directional: VPpli, the unit vector towards the light
+  float half[3] = {};           // directional with an infinite viewer: the unit half vector
+  bool spot = false;            // cutoff != 180
   float spot_direction[3] = {}; // unit spot direction
-  float spot_cos = 0.0f;      // cos(cutoff)
+  float spot_cos = 0.0f;        // cos(cutoff)
   float spot_exponent = 0.0f;
-  float spot_factor = 1.0f;   // directional spot lights: the spot term is constant
-  bool attenuated = false;    // positional with attenuation other than (1, 0, 0)
+  float spot_factor = 1.0f; // directional spot lights: the spot term is constant
+  bool attenuated = false;  // positional with attenuation other than (1, 0, 0)
   float k[3] = {1.0f, 0.0f, 0.0f};
 };
 
@@ -69,13 +68,12 @@ struct LightSetup {
   bool separate_specular = false;
   // COLOR_MATERIAL: which properties of which faces take the vertex colour.
   bool track[2] = {false, false}; // front, back
-  bool track_ambient = false, track_diffuse = false, track_specular = false,
-       track_emission = false;
+  bool track_ambient = false, track_diffuse = false, track_specular = false, track_emission = false;
   // Normal transformation (GL 2.1 §2.11.3): inverse transpose of the model-view's upper 3x3,
   // column-major, with the rescale factor folded in.
   float normal_matrix[9] = {1, 0, 0, 0, 1, 0, 0, 0, 1};
   bool normalize = false;
-  float modelview[16] = {};   // column-major, for eye-space vertex positions
+  float modelview[16] = {}; // column-major, for eye-space vertex positions
   bool need_eye_position = false;
 };
 
@@ -103,7 +101,8 @@ struct LightingState {
 
   LightingState() {
     // Table 2.10: light 0 has white diffuse and specular intensities, the others black.
-    for (int c = 0; c < 4; ++c) light[0].diffuse[c] = light[0].specular[c] = 1.0f;
+    for (int c = 0; c < 4; ++c)
+      light[0].diffuse[c] = light[0].specular[c] = 1.0f;
   }
 };
 

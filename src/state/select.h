@@ -9,15 +9,13 @@
 #include <cstdint>
 #include <unordered_map>
 
-#include "geometry/vertex.h"
+#include "core/vertex.h"
+#include "core/limits.h"
 
 namespace pineda {
 
 struct Context;
 struct InputVertex;
-
-// GL 2.1 §5.2: the name stack must hold at least 64 names (MAX_NAME_STACK_DEPTH).
-constexpr int kMaxNameStackDepth = 64;
 
 // RENDER_MODE and the selection and feedback state of GL 2.1 Table 6.31 (§5.2, §5.3).
 struct RenderModeState {

@@ -10,7 +10,7 @@
 #include <memory>
 
 #include "geometry/texcoord.h"
-#include "geometry/vertex.h"
+#include "core/vertex.h"
 
 namespace pineda {
 

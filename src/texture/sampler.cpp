@@ -176,8 +176,6 @@ bool make_sampler_view(const TextureObject& tex, SamplerView& out) {
 
 namespace {
 
-constexpr float kMaxLodBias = 16.0f; // MAX_TEXTURE_LOD_BIAS
-
 // The two texels and weight of one axis for LINEAR, or the texel for NEAREST (i0), after the
 // wrap mode (GL 2.1 §3.8.8 eq. 3.20-3.26). Indices lie in [-1, size]; those outside
 // [0, size-1] address the border.

@@ -6,6 +6,7 @@
 #include <GL/gl.h>
 
 #include <cstdint>
+#include "core/limits.h"
 
 namespace pineda {
 
@@ -17,14 +18,7 @@ struct TexImage;
 // textures appear as the base DEPTH_TEXTURE_MODE selects (§3.8.14).
 enum class TexBase : uint8_t { Alpha, Luminance, LuminanceAlpha, Intensity, RGB, RGBA };
 
-constexpr int kMaxTexLevels = 12;   // 2048 = 2^11: levels 0..11
-constexpr int kMax3DTexLevels = 12; // 2048, as llvmpipe
-constexpr int kMaxTextureSize = 1 << (kMaxTexLevels - 1);
-constexpr int kMax3DTextureSize = 1 << (kMax3DTexLevels - 1);
-constexpr int kMaxCubeTextureSize = kMaxTextureSize;
 constexpr int kMaxSampleBatch = 64;
-// The largest texel store of one image (4 bytes per texel); larger images are OUT_OF_MEMORY.
-constexpr uint64_t kMaxTextureImageBytes = uint64_t(1) << 30;
 
 // One mipmap level of one face as the sampler reads it. Sizes include the border.
 struct SamplerLevel {

@@ -17,7 +17,6 @@ namespace {
 
 constexpr GLenum kTargets[kTexTargetCount] = {GL_TEXTURE_1D, GL_TEXTURE_2D, GL_TEXTURE_3D,
                                               GL_TEXTURE_CUBE_MAP};
-constexpr float kMaxLodBias = 16.0f; // MAX_TEXTURE_LOD_BIAS, as llvmpipe
 
 TextureObject* lookup(Context* ctx, GLuint name) {
   auto it = ctx->shared->textures.find(name);

@@ -10,7 +10,7 @@
 #include <memory>
 #include <vector>
 
-#include "geometry/vertex.h"
+#include "core/limits.h"
 #include "texture/sampler.h"
 
 namespace pineda {

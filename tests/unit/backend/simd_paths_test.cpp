@@ -18,7 +18,7 @@
 #include "fragment/fragment_ops.h"
 #include "fragment/shade.h"
 #include "core/simd_level.h"
-#include "geometry/vertex.h"
+#include "core/vertex.h"
 #include "raster/raster.h"
 #include "raster_test_util.h"
 

@@ -1,8 +1,11 @@
 // The processed vertex: what the geometry stage hands to primitive assembly, clipping and
 // rasterization. One layout for every path (immediate mode, arrays, buffers, display lists).
+// Plain data at the bottom of the layers: the geometry stage writes it, the back end reads it.
 #pragma once
 
 #include <cstdint>
+
+#include "core/limits.h"
 
 namespace pineda {
 
@@ -12,7 +15,6 @@ namespace pineda {
 constexpr int kAttrColor = 0;  // primary colour RGBA, clamped to [0,1]
 constexpr int kAttrColor2 = 4; // secondary colour RGB(A) (GL 1.4 colour sum)
 constexpr int kAttrTex0 = 8;   // texture unit u at kAttrTex0 + 4*u, (s,t,r,q)
-constexpr int kMaxTexUnits = 4;
 constexpr int kAttrFog = kAttrTex0 + 4 * kMaxTexUnits; // 24: fog coordinate / factor
 constexpr int kAttrBackColor = 28;                     // two-sided lighting: back primary colour
 constexpr int kAttrBackColor2 = 32;                    // two-sided lighting: back secondary colour
@@ -27,7 +29,7 @@ enum ClipBit : uint32_t {
   kClipNear = 1u << 4,   // z < -w
   kClipFar = 1u << 5,    // z >  w
   kClipUser0 = 1u << 6,  // user plane i at kClipUser0 << i (i < 6): dot(plane, clip) < 0
-  kClipGuard = 1u << 12, // x or y outside the guard band (see raster.h kGuardBand)
+  kClipGuard = 1u << 12, // x or y outside the guard band (raster_state.h kGuardBand)
 };
 constexpr uint32_t kClipFrustumMask = 0x3f;
 
