@@ -79,6 +79,26 @@ inline double polygon_offset_depth(const RasterModes& m, double dzdx, double dzd
   return m.offset_factor * (ax > ay ? ax : ay) + 2.0 * m.offset_units * (depth_max * m.depth_mrd);
 }
 
+// Blending (GL 2.1 §4.1.8): the factors, equations and constant colour, as the colour-buffer
+// group keeps them (state/fragment_state.h) and the fragment stage reads them.
+struct BlendState {
+  GLenum src_rgb = GL_ONE, dst_rgb = GL_ZERO;
+  GLenum src_a = GL_ONE, dst_a = GL_ZERO;
+  GLenum eq_rgb = GL_FUNC_ADD, eq_a = GL_FUNC_ADD;
+  float color[4] = {0, 0, 0, 0}; // BLEND_COLOR, clamped to [0,1] when specified
+};
+
+// The stencil test and operations of one face (GL 2.1 §4.1.5) and its write mask (§4.2.2), as
+// the stencil-buffer group keeps them (state/fragment_state.h) and the fragment stage reads
+// them.
+struct StencilFace {
+  GLenum func = GL_ALWAYS;
+  int ref = 0; // as given; clamped to the buffer's range when used (§4.1.5)
+  uint32_t value_mask = 0xffffffffu;
+  GLenum fail = GL_KEEP, depth_fail = GL_KEEP, depth_pass = GL_KEEP;
+  uint32_t writemask = 0xffffffffu; // glStencilMask (§4.2.2)
+};
+
 struct ShadeSetup; // fragment/shade.h
 
 // Everything the back end needs, derived from GL state by the front end's validation step.
@@ -111,11 +131,7 @@ struct RasterState {
   float alpha_ref = 0.0f; // clamped to [0,1] by glAlphaFunc (§4.1.4)
 
   bool stencil_test = false;
-  GLenum stencil_func = GL_ALWAYS;
-  int stencil_ref = 0; // as given; clamped to the buffer's range when used (§4.1.5)
-  uint32_t stencil_value_mask = 0xffffffffu;
-  GLenum stencil_fail = GL_KEEP, stencil_depth_fail = GL_KEEP, stencil_depth_pass = GL_KEEP;
-  uint32_t stencil_writemask = 0xffffffffu; // glStencilMask (§4.2.2)
+  StencilFace stencil; // the front face's (separate back-face stencil is GL 2.0)
 
   bool depth_test = false;
   GLenum depth_func = GL_LESS;
@@ -123,10 +139,7 @@ struct RasterState {
   bool color_write[4] = {true, true, true, true}; // glColorMask R,G,B,A
 
   bool blend = false;
-  GLenum blend_src_rgb = GL_ONE, blend_dst_rgb = GL_ZERO;
-  GLenum blend_src_a = GL_ONE, blend_dst_a = GL_ZERO;
-  GLenum blend_eq_rgb = GL_FUNC_ADD, blend_eq_a = GL_FUNC_ADD;
-  float blend_color[4] = {0, 0, 0, 0};
+  BlendState blend_state;
 
   // GL 2.1 §4.1.10: with the colour logic operation on, blending is off whatever BLEND says.
   bool logic_op = false;
@@ -136,8 +149,7 @@ struct RasterState {
   // Set while texturing or fog is on: primitives are then shaded per fragment. Derived state
   // owned by the context, valid while the draw runs.
   const ShadeSetup* shade = nullptr;
-  // Wide, stippled and smooth lines and points, polygon stipple and offset (GL 2.1 §3.3-§3.5;
-  // src/state/raster_modes.cpp derives them).
+  // Wide, stippled and smooth lines and points, polygon stipple and offset (GL 2.1 §3.3-§3.5).
   RasterModes modes;
   // Occlusion queries (GL 2.1 §4.1.7, src/state/query.cpp): a SAMPLES_PASSED query is
   // active, so the fragment stage counts the fragments that pass the depth and stencil tests.

@@ -5,7 +5,7 @@
 #include <algorithm>
 #include <initializer_list>
 
-#include "core/context.h"
+#include "state/context.h"
 #include "geometry/cull.h"
 #include "state/select.h"
 
@@ -158,7 +158,7 @@ void select_feedback_draw(Context* ctx, const InputVertex* in, PVertex* verts, s
   if (textured && rs.attr_count < kTexEnd) {
     // Unit 0's coordinates are not live in this draw (texturing is off): compute them here,
     // through the texture matrix (GL 2.1 §2.11.4), for feedback to report.
-    const glm::mat4& tm = ctx->texture[0].top();
+    const glm::mat4& tm = ctx->texture_matrix[0].top();
     for (size_t i = 0; i < n; ++i) {
       const float* t = in[i].tex[0];
       for (int r = 0; r < 4; ++r)

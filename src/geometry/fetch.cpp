@@ -152,7 +152,7 @@ const uint8_t* array_base(Context* ctx, const ClientArray& a, size_t max_element
 // Every client array in a fixed order: vertex, colour, normal, edge flag, secondary colour,
 // fog coordinate, then the texture coordinate array of each unit.
 constexpr int kArrayCount = 6 + kMaxTexUnits;
-inline void all_arrays(const VertexArrays& arr, const ClientArray* (&out)[kArrayCount]) {
+inline void all_arrays(const VertexArrayGroup& arr, const ClientArray* (&out)[kArrayCount]) {
   out[0] = &arr.vertex;
   out[1] = &arr.color;
   out[2] = &arr.normal;
@@ -166,7 +166,7 @@ inline void all_arrays(const VertexArrays& arr, const ClientArray* (&out)[kArray
 template <typename Elements>
 bool fetch(Context* ctx, Elements el, size_t n, size_t max_element, uint32_t tex_units,
            InputVertex* out) {
-  const VertexArrays& arr = ctx->arrays;
+  const VertexArrayGroup& arr = ctx->arrays;
   const ClientArray* arrays[kArrayCount];
   all_arrays(arr, arrays);
   const uint8_t* bases[kArrayCount] = {};
@@ -181,17 +181,17 @@ bool fetch(Context* ctx, Elements el, size_t n, size_t max_element, uint32_t tex
   def.pos[0] = def.pos[1] = def.pos[2] = 0.0f;
   def.pos[3] = 1.0f;
   for (int i = 0; i < 4; ++i)
-    def.color[i] = ctx->cur_color[i];
+    def.color[i] = ctx->current.color[i];
   for (int i = 0; i < 3; ++i)
-    def.normal[i] = ctx->cur_normal[i];
+    def.normal[i] = ctx->current.normal[i];
   for (int u = 0; u < kMaxTexUnits; ++u)
     for (int i = 0; i < 4; ++i)
-      def.tex[u][i] = arr.texcoord[u].enabled ? (i == 3 ? 1.0f : 0.0f) : ctx->cur_tex[u][i];
+      def.tex[u][i] = arr.texcoord[u].enabled ? (i == 3 ? 1.0f : 0.0f) : ctx->current.tex[u][i];
   if (arr.color.enabled && arr.color.size == 3) def.color[3] = 1.0f;
   for (int i = 0; i < 3; ++i)
-    def.color2[i] = ctx->cur_color2[i];
-  def.fog = ctx->texpipe.cur_fog_coord;
-  def.edge = ctx->cur_edge ? 1u : 0u;
+    def.color2[i] = ctx->current.color2[i];
+  def.fog = ctx->current.fog_coord;
+  def.edge = ctx->current.edge ? 1u : 0u;
   // Elements [k0, k1) of the draw: independent of each other, so a large draw's are split
   // among the worker threads as the transform's are (transform.cpp).
   const auto fill = [&](size_t k0, size_t k1) {

@@ -4,7 +4,7 @@
 #include <cstddef>
 #include <cstdint>
 
-#include "core/context.h"
+#include "state/context.h"
 
 namespace pineda {
 

@@ -67,7 +67,7 @@ struct VertexJob {
   const float* m; // composite matrix, column-major
   const ClipSetup* cs;
   const Viewport* vp;
-  const LightingState* lighting;
+  const LightSetup* light;
   const MaterialChange* changes;
   size_t change_count;
   const Material* material;
@@ -135,7 +135,7 @@ template <bool kLit, bool kExtra> void transform_vertices(const VertexJob& job) 
   LitFaces faces;
   bool tracking = false;
   if constexpr (kLit) {
-    const LightSetup& ls = job.lighting->setup;
+    const LightSetup& ls = *job.light;
     tracking = ls.track[0] || ls.track[1];
     if (!tracking) prepare_lit_faces(ls, material, nullptr, faces);
   }
@@ -145,8 +145,7 @@ template <bool kLit, bool kExtra> void transform_vertices(const VertexJob& job) 
     for (size_t i0 = 0; i0 < job.n; i0 += kVertexChunk) {
       const size_t count = std::min(kVertexChunk, job.n - i0);
       transform_positions(m, *job.cs, *job.vp, job.in + i0, job.out + i0, count);
-      if constexpr (kLit)
-        light_vertices(job.lighting->setup, faces, job.in + i0, job.out + i0, count);
+      if constexpr (kLit) light_vertices(*job.light, faces, job.in + i0, job.out + i0, count);
       for (size_t i = i0; i < i0 + count; ++i)
         finish_vertex<kLit, kExtra>(job, i);
     }
@@ -161,7 +160,7 @@ template <bool kLit, bool kExtra> void transform_vertices(const VertexJob& job) 
     p.clipmask = clip_code(*job.cs, p.clip);
     if (p.clipmask == 0) to_window(p, *job.vp);
     if constexpr (kLit) {
-      const LightSetup& ls = job.lighting->setup;
+      const LightSetup& ls = *job.light;
       if (next_change < job.change_count && job.changes[next_change].vertex <= i) {
         while (next_change < job.change_count && job.changes[next_change].vertex <= i)
           material = job.changes[next_change++].material;
@@ -192,18 +191,18 @@ void draw_vertices_once(Context* ctx, GLenum mode, const InputVertex* in, size_t
   job.vp = &vp;
   // GL 2.1 §2.14.1: lighting replaces the current colour. Material calls between Begin and
   // End (§2.14.2) change the material from a given vertex of the primitive on.
-  const LightingState& lighting = ctx->lighting;
+  const LightingGroup& lighting = ctx->lighting;
   const bool lit = lighting.enabled;
-  job.lighting = &lighting;
-  job.changes = lighting.imm_changes.data();
-  job.change_count = lit ? lighting.imm_changes.size() : 0;
-  job.material = job.change_count != 0 ? lighting.begin_material : lighting.material;
+  job.light = &ctx->light_setup;
+  job.changes = ctx->imm.material_changes.data();
+  job.change_count = lit ? ctx->imm.material_changes.size() : 0;
+  job.material = job.change_count != 0 ? ctx->imm.begin_material : lighting.material;
   // §3.9: with lighting on the colour sum always applies and the secondary colour is zero
   // unless the specular term is separate; otherwise COLOR_SUM adds the current secondary
   // colour.
   // Feedback returns the primary colour alone (GL 2.1 §5.3), so nothing is folded in there.
   job.color_sum =
-      (lit ? lighting.setup.separate_specular : lighting.color_sum) && render_mode_is_render(ctx);
+      (lit ? ctx->light_setup.separate_specular : ctx->fog.color_sum) && render_mode_is_render(ctx);
   // With texturing or fog on, the fragment stage adds the secondary colour after the texture
   // environments (fragment/shade.cpp); otherwise it is folded in here.
   job.fold_sum = job.color_sum && rs.shade == nullptr;

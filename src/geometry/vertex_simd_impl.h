@@ -13,7 +13,7 @@
 #include <cstdint>
 #include <cstring>
 
-#include "core/context.h"
+#include "state/context.h"
 #include "geometry/clip.h"
 #include "geometry/light_eval.h"
 #include "core/vertex.h"

@@ -5,7 +5,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "core/context.h"
+#include "state/context.h"
 #include "geometry/geometry.h"
 #include "state/select.h"
 
@@ -15,6 +15,9 @@ namespace pineda {
 // name. Call when either changes or when the window-system layer attaches new buffers; does
 // nothing for a framebuffer with a single colour buffer.
 void select_color_buffers(Context* ctx);
+
+struct StateArea;
+extern const StateArea kFramebufferArea; // draw_read_buffer.cpp
 
 // The depth and stencil values a FRONT_AND_BACK pass may change, kept so that the next pass
 // starts from the same values.

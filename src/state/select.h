@@ -1,6 +1,6 @@
-// Selection and feedback (GL 2.1 §5.2, §5.3), occlusion queries (§4.1.7, §6.1.12) and the
-// accumulation buffer's state (§4.2.4): the context state, and the hooks other parts of
-// Pineda call (the draw path, the pixel paths, glGet, glClear).
+// Selection and feedback (GL 2.1 §5.2, §5.3; Table 6.31) and occlusion queries (§4.1.7,
+// §6.1.12): the context state, and the functions other parts of Pineda call (the draw path,
+// the pixel paths, glClear).
 #pragma once
 
 #include <GL/gl.h>
@@ -56,12 +56,7 @@ struct QueryState {
   uint64_t samples_passed = 0; // samples counted since BeginQuery (the fragment stage adds)
 };
 
-// The accumulation buffer's context state (Table 6.22).
-struct AccumState {
-  float clear[4] = {0, 0, 0, 0}; // ACCUM_CLEAR_VALUE, clamped to [-1, 1]
-};
-
-// ---- hooks for the rest of Pineda ----
+// ---- for the rest of Pineda ----
 
 // True in RENDER mode; in SELECT and FEEDBACK mode nothing reaches the framebuffer (GL 2.1
 // §5.2, §5.3): draws, clears, accumulation and pixel rectangles update no pixel.
@@ -96,13 +91,8 @@ void feedback_value(RenderModeState& rm, float v);
 void feedback_vertex(RenderModeState& rm, const float win[3], float clip_w, const float color[4],
                      const float tex[4]);
 
-// glGet values of the state in this header (RENDER_MODE, selection, feedback, name stack,
-// accumulation buffer): up to four values in `v`; `normalized` when they map to the full
-// integer range in GetIntegerv (GL 2.1 §6.1.2). False when pname is not one of them.
-bool select_state_values(Context* ctx, GLenum pname, double v[4], int* n, bool* normalized);
-
-// glGetPointerv for SELECTION_BUFFER_POINTER and FEEDBACK_BUFFER_POINTER.
-bool select_state_pointer(Context* ctx, GLenum pname, void** out);
+struct StateArea;
+extern const StateArea kSelectArea; // select.cpp
 
 // glClear(GL_ACCUM_BUFFER_BIT) (accum.cpp): fill the accumulation buffer, within the scissor
 // box when the scissor test is on, with the clear value. No-op without an accumulation buffer.

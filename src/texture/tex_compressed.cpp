@@ -6,7 +6,7 @@
 // it. Their display-list savers are here too (src/api/dlist_savers.txt).
 #include <cstring>
 
-#include "core/api_util.h"
+#include "state/api_util.h"
 #include "dispatch.h"
 #include "texture/texture_internal.h"
 

@@ -6,7 +6,7 @@
 #include <stdexcept>
 #include <vector>
 
-#include "core/api_util.h"
+#include "state/api_util.h"
 #include "dispatch.h"
 #include "framebuffer/read_pixels.h"
 #include "pixel/transfer.h"
@@ -28,9 +28,9 @@ void read_framebuffer(const Context* ctx, int x, int y, int w, int h, bool depth
   read_pixels(read_view(ctx->fb), x, y, w, h, depth ? GL_DEPTH_COMPONENT : GL_RGBA, GL_FLOAT, pack,
               out);
   if (depth)
-    transfer_depth(ctx->pixel_transfer, out, n);
+    transfer_depth(pixel_transfer_view(ctx), out, n);
   else
-    transfer_rgba(ctx->pixel_transfer, out, n);
+    transfer_rgba(pixel_transfer_view(ctx), out, n);
 }
 
 // The source buffer must exist: a depth texture needs a depth buffer (§3.8.2, §4.3.2).

@@ -9,7 +9,7 @@
 #include <stdexcept>
 #include <vector>
 
-#include "core/api_util.h"
+#include "state/api_util.h"
 #include "dispatch.h"
 #include "pixel/unpack.h"
 #include "texture/tex_format.h"
@@ -45,9 +45,9 @@ bool copy_rgba8(const Context* ctx, TexImage& im, int dims, int x, int y, int z,
                 int d, GLenum format, GLenum type, const void* pixels) {
   if (im.is_depth || format != GL_RGBA || type != GL_UNSIGNED_BYTE || im.base != TexBase::RGBA ||
       im.red_size != 8 || im.green_size != 8 || im.blue_size != 8 || im.alpha_size != 8 ||
-      rgba_transfer_active(ctx->pixel_transfer))
+      rgba_transfer_active(pixel_transfer_view(ctx)))
     return false;
-  PixelStore st = store_for(ctx->unpack, dims);
+  PixelStore st = store_for(ctx->pixel_store.unpack, dims);
   const int skip = st.skip_images;
   const int bi = im.border, bj = dims >= 2 ? im.border : 0, bk = dims >= 3 ? im.border : 0;
   const uint8_t* src = static_cast<const uint8_t*>(pixels);
@@ -68,15 +68,15 @@ bool copy_rgba8(const Context* ctx, TexImage& im, int dims, int x, int y, int z,
 void unpack_into(const Context* ctx, TexImage& im, int dims, int x, int y, int z, int w, int h,
                  int d, GLenum format, GLenum type, const void* pixels) {
   if (copy_rgba8(ctx, im, dims, x, y, z, w, h, d, format, type, pixels)) return;
-  PixelStore st = store_for(ctx->unpack, dims);
+  PixelStore st = store_for(ctx->pixel_store.unpack, dims);
   std::vector<float> tmp(size_t(w) * size_t(h) * (im.is_depth ? 1 : 4));
   const int skip = st.skip_images;
   for (int k = 0; k < d; ++k) {
     st.skip_images = skip + k;
     if (im.is_depth)
-      unpack_depth(pixels, w, h, 1, type, st, ctx->pixel_transfer, tmp.data());
+      unpack_depth(pixels, w, h, 1, type, st, pixel_transfer_view(ctx), tmp.data());
     else
-      unpack_rgba(pixels, w, h, 1, format, type, st, ctx->pixel_transfer, tmp.data());
+      unpack_rgba(pixels, w, h, 1, format, type, st, pixel_transfer_view(ctx), tmp.data());
     store_region(im, dims, x, y, z + k, w, h, 1, tmp.data());
   }
 }
@@ -84,7 +84,7 @@ void unpack_into(const Context* ctx, TexImage& im, int dims, int x, int y, int z
 // Packs RGBA or depth floats into client memory per the pack state (§6.1.4, §4.3.2).
 void pack_groups(const Context* ctx, const float* in, int w, int h, int d, int dims, GLenum format,
                  GLenum type, void* pixels) {
-  const PixelStore st = store_for(ctx->pack, dims);
+  const PixelStore st = store_for(ctx->pixel_store.pack, dims);
   if (format == GL_DEPTH_COMPONENT)
     pack_depth(in, w, h, d, type, st, pixels);
   else

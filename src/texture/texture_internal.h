@@ -4,7 +4,7 @@
 
 #include <GL/gl.h>
 
-#include "core/context.h"
+#include "state/context.h"
 #include "texture/tex_format.h"
 #include "texture/texture_object.h"
 

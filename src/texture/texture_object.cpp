@@ -7,8 +7,9 @@
 #include <cmath>
 #include <limits>
 
-#include "core/api_util.h"
+#include "state/api_util.h"
 #include "dispatch.h"
+#include "state/area.h"
 #include "texture/texture_internal.h"
 
 namespace pineda {
@@ -255,7 +256,7 @@ int texture_target_index(GLenum target) {
 
 TextureObject* active_texture_object(Context* ctx, int target_index) {
   return const_cast<TextureObject*>(
-      bound_texture(ctx, static_cast<int>(ctx->active_texture), kTargets[target_index]));
+      bound_texture(ctx, static_cast<int>(ctx->texture.active), kTargets[target_index]));
 }
 
 TextureState::TextureState() {
@@ -279,66 +280,88 @@ const TextureObject* bound_texture(const Context* ctx, int unit, GLenum target) 
   return ctx->texobj.defaults[t].get();
 }
 
-void save_texture_attrib(const Context* ctx, TextureAttrib& out) {
-  for (int u = 0; u < kMaxTexUnits; ++u) {
-    for (int t = 0; t < kTexTargetCount; ++t) {
-      out.bound[u][t] = ctx->texobj.bound[u][t];
-      out.params[u][t] = bound_texture(ctx, u, kTargets[t])->params;
-    }
+namespace {
+
+// glPushAttrib(TEXTURE_BIT), the part the texture objects own (GL 2.1 §6.1.14): the bindings of
+// every unit and the parameters of the bound objects (Tables 6.16-6.19).
+class SavedTextureObjects final : public SavedAttrib {
+public:
+  explicit SavedTextureObjects(const Context& ctx) {
+    for (int u = 0; u < kMaxTexUnits; ++u)
+      for (int t = 0; t < kTexTargetCount; ++t) {
+        bound_[u][t] = ctx.texobj.bound[u][t];
+        params_[u][t] = bound_texture(&ctx, u, kTargets[t])->params;
+      }
   }
+  // §6.1.14: popping TEXTURE_BIT rebinds the saved names and restores the saved parameters of
+  // those objects; an object deleted in between is not recreated (its binding reverts to 0).
+  void restore(Context& ctx) const override {
+    for (int u = 0; u < kMaxTexUnits; ++u)
+      for (int t = 0; t < kTexTargetCount; ++t) {
+        const GLuint name = bound_[u][t];
+        TextureObject* tex = name == 0 ? ctx.texobj.defaults[t].get() : lookup(&ctx, name);
+        ctx.texobj.bound[u][t] = tex != nullptr ? name : 0;
+        if (tex != nullptr) tex->params = params_[u][t];
+      }
+    texture_changed(&ctx);
+  }
+
+private:
+  GLuint bound_[kMaxTexUnits][kTexTargetCount];
+  TexParams params_[kMaxTexUnits][kTexTargetCount];
+};
+
+std::unique_ptr<SavedAttrib> save_objects(const Context& ctx) {
+  return std::make_unique<SavedTextureObjects>(ctx);
 }
 
-// §6.1.14: popping TEXTURE_BIT rebinds the saved names and restores the saved parameters of
-// those objects; an object deleted in between is not recreated (its binding reverts to 0).
-void restore_texture_attrib(Context* ctx, const TextureAttrib& in) {
-  for (int u = 0; u < kMaxTexUnits; ++u) {
-    for (int t = 0; t < kTexTargetCount; ++t) {
-      const GLuint name = in.bound[u][t];
-      TextureObject* tex = name == 0 ? ctx->texobj.defaults[t].get() : lookup(ctx, name);
-      ctx->texobj.bound[u][t] = tex != nullptr ? name : 0;
-      if (tex != nullptr) tex->params = in.params[u][t];
-    }
-  }
-  texture_changed(ctx);
-}
+constexpr AttribGroup kTextureObjectGroups[] = {
+    {GL_TEXTURE_BIT, false, true, kDirtyTexture, save_objects},
+};
 
-// glGet values owned by the texture objects (Tables 6.17, 6.36): their count, -1 for an empty
-// list, 0 for other pnames.
-int texture_get_values(Context* ctx, GLenum pname, double* v, bool* is_float) {
-  *is_float = false;
+// The bindings of the active unit (Table 6.16) and the texture limits (Table 6.36).
+bool get_texture_objects(Context& ctx, GLenum pname, QueryValues& out) {
   const int ti = pname == GL_TEXTURE_BINDING_1D         ? kTex1D
                  : pname == GL_TEXTURE_BINDING_2D       ? kTex2D
                  : pname == GL_TEXTURE_BINDING_3D       ? kTex3D
                  : pname == GL_TEXTURE_BINDING_CUBE_MAP ? kTexCube
                                                         : -1;
   if (ti >= 0) {
-    const GLuint name = ctx->texobj.bound[ctx->active_texture][ti];
-    v[0] = lookup(ctx, name) != nullptr ? name : 0;
-    return 1;
+    const GLuint name = ctx.texobj.bound[ctx.texture.active][ti];
+    out.ints({lookup(&ctx, name) != nullptr ? double(name) : 0.0});
+    return true;
   }
   switch (pname) {
   case GL_MAX_TEXTURE_SIZE:
-    v[0] = kMaxTextureSize;
-    return 1;
+    out.ints({kMaxTextureSize});
+    return true;
   case GL_MAX_3D_TEXTURE_SIZE:
-    v[0] = kMax3DTextureSize;
-    return 1;
+    out.ints({kMax3DTextureSize});
+    return true;
   case GL_MAX_CUBE_MAP_TEXTURE_SIZE:
-    v[0] = kMaxCubeTextureSize;
-    return 1;
+    out.ints({kMaxCubeTextureSize});
+    return true;
+  // GL 2.1 §3.8.1: no specific compressed internal formats (tex_compressed.cpp): an empty list.
   case GL_NUM_COMPRESSED_TEXTURE_FORMATS:
-    v[0] = 0;
-    return 1;
+    out.ints({0});
+    return true;
   case GL_COMPRESSED_TEXTURE_FORMATS:
-    return -1; // an empty list (tex_compressed.cpp)
+    return true;
   case GL_MAX_TEXTURE_LOD_BIAS:
-    *is_float = true;
-    v[0] = kMaxLodBias;
-    return 1;
+    out.floats({kMaxLodBias});
+    return true;
   default:
-    return 0;
+    return false;
   }
 }
+
+} // namespace
+
+const StateArea kTextureObjectArea = {
+    .name = "texture objects (GL 2.1 §3.8.12, Tables 6.16-6.19)",
+    .get = get_texture_objects,
+    .groups = kTextureObjectGroups,
+};
 
 namespace exec {
 
@@ -398,7 +421,7 @@ void GLAPIENTRY BindTexture(GLenum target, GLuint texture) {
       return record_error(ctx, GL_INVALID_OPERATION, "glBindTexture");
     slot->target = target;
   }
-  GLuint& binding = ctx->texobj.bound[ctx->active_texture][ti];
+  GLuint& binding = ctx->texobj.bound[ctx->texture.active][ti];
   if (binding == texture) return;
   binding = texture;
   texture_changed(ctx);

@@ -1,5 +1,5 @@
 // Texture objects (GL 2.1 §3.8.12) and their images (§3.8.1-§3.8.5), and the per-context
-// texture bindings. Objects live in SharedObjects (core/context.h); src/texture/texture_object.cpp
+// texture bindings. Objects live in SharedObjects (state/context.h); src/texture/texture_object.cpp
 // implements the commands that create, bind and delete them and set their parameters,
 // src/texture/tex_image.cpp the image specification commands.
 #pragma once
@@ -68,14 +68,9 @@ struct TextureState {
   std::unique_ptr<TextureObject> proxies[kTexTargetCount];
 };
 
-// glPushAttrib(TEXTURE_BIT), the part owned by the texture objects: the bindings of every unit
-// and the parameters of the bound objects (GL 2.1 §6.1.14, Table 6.19). attrib.cpp keeps one
-// TextureAttrib in its frame and calls these.
-struct TextureAttrib {
-  GLuint bound[kMaxTexUnits][kTexTargetCount];
-  TexParams params[kMaxTexUnits][kTexTargetCount];
-};
-void save_texture_attrib(const Context* ctx, TextureAttrib& out);
-void restore_texture_attrib(Context* ctx, const TextureAttrib& in);
+struct StateArea;
+// Texture bindings and limits for glGet, and the bindings with the bound objects' parameters
+// that TEXTURE_BIT saves (texture_object.cpp).
+extern const StateArea kTextureObjectArea;
 
 } // namespace pineda

@@ -209,14 +209,14 @@ Bool make_current(Display* dpy, GLXDrawable draw, GLXDrawable read, GLXContext h
   // GL 2.1 §2.11.1: the viewport starts as the whole drawable when first made current.
   if (!ctx->ever_current) {
     ctx->ever_current = true;
-    ctx->vp_w = s->width;
-    ctx->vp_h = s->height;
+    ctx->viewport.w = s->width;
+    ctx->viewport.h = s->height;
     mark_dirty(ctx, kDirtyViewport);
     // GL 2.1 §4.2.1, §4.3.2: BACK when there is a back buffer, FRONT otherwise. Set before
     // attach, which selects the buffers they name.
     const GLenum initial = has_back_buffer(*s) ? GL_BACK : GL_FRONT;
-    ctx->draw_buffer = initial;
-    ctx->read_buffer = initial;
+    ctx->color_buffer.draw_buffer = initial;
+    ctx->pixel.read_buffer = initial;
     mark_dirty(ctx, kDirtyFragment);
   }
   attach(ctx, *s);

@@ -19,7 +19,7 @@
 #include <unordered_map>
 #include <vector>
 
-#include "core/context.h"
+#include "state/context.h"
 
 namespace pineda::glx {
 

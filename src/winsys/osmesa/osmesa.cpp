@@ -8,8 +8,8 @@
 #include <new>
 #include <vector>
 
-#include "core/api_util.h"
-#include "core/context.h"
+#include "state/api_util.h"
+#include "state/context.h"
 #include "core/version.h"
 #include "dispatch.h"
 
@@ -198,10 +198,10 @@ OSMESA_EXPORT GLboolean OSMesaMakeCurrent(OSMesaContext ctx, void* buffer, GLenu
   // first time the context is made current.
   if (!gl->ever_current) {
     gl->ever_current = true;
-    gl->vp_w = width;
-    gl->vp_h = height;
-    gl->scissor_box[2] = width;
-    gl->scissor_box[3] = height;
+    gl->viewport.w = width;
+    gl->viewport.h = height;
+    gl->scissor.box[2] = width;
+    gl->scissor.box[3] = height;
     pineda::mark_dirty(gl, pineda::kDirtyViewport | pineda::kDirtyFragment);
   }
   pineda::t_current_osmesa = s;

@@ -8,7 +8,7 @@
 #include <vector>
 
 #include "api_fixture.h"
-#include "core/context.h"
+#include "state/context.h"
 #include "texture/sampler.h"
 #include "texture/texture_object.h"
 

@@ -194,14 +194,14 @@ TEST(Fragment, BlendEveryFactorAndEquationMatchesReference) {
         for (size_t ei = 0; ei < std::size(eqs); ++ei) {
           RasterState rs;
           rs.blend = true;
-          rs.blend_src_rgb = factors[fi];
-          rs.blend_dst_rgb = factors[fj];
+          rs.blend_state.src_rgb = factors[fi];
+          rs.blend_state.dst_rgb = factors[fj];
           // Separate alpha factors and equation, rotated through the lists.
-          rs.blend_src_a = factors[(fi + 3 * fj + 1) % std::size(factors)];
-          rs.blend_dst_a = factors[(fi * 7 + fj + 5) % std::size(factors)];
-          rs.blend_eq_rgb = eqs[ei];
-          rs.blend_eq_a = eqs[(ei + fi + fj) % std::size(eqs)];
-          std::copy(konst, konst + 4, rs.blend_color);
+          rs.blend_state.src_a = factors[(fi + 3 * fj + 1) % std::size(factors)];
+          rs.blend_state.dst_a = factors[(fi * 7 + fj + 5) % std::size(factors)];
+          rs.blend_state.eq_rgb = eqs[ei];
+          rs.blend_state.eq_a = eqs[(ei + fi + fj) % std::size(eqs)];
+          std::copy(konst, konst + 4, rs.blend_state.color);
           for (int si = 0; si < 2; ++si) {
             for (int di = 0; di < 2; ++di) {
               TestFb t(2, 1, fmt, 0);
@@ -223,9 +223,9 @@ TEST(Fragment, BlendEveryFactorAndEquationMatchesReference) {
               }
               const auto got = t.rgba(0, 0);
               for (int c = 0; c < (has_alpha ? 4 : 3); ++c) {
-                const GLenum sf = c == 3 ? rs.blend_src_a : rs.blend_src_rgb;
-                const GLenum df = c == 3 ? rs.blend_dst_a : rs.blend_dst_rgb;
-                const GLenum eq = c == 3 ? rs.blend_eq_a : rs.blend_eq_rgb;
+                const GLenum sf = c == 3 ? rs.blend_state.src_a : rs.blend_state.src_rgb;
+                const GLenum df = c == 3 ? rs.blend_state.dst_a : rs.blend_state.dst_rgb;
+                const GLenum eq = c == 3 ? rs.blend_state.eq_a : rs.blend_state.eq_rgb;
                 const double want = ref_blend(eq, s[c], d[c], ref_factor(sf, c, s, d, k),
                                               ref_factor(df, c, s, d, k));
                 ASSERT_NEAR(got[c], want, 1.0) << "channel " << c << " src " << std::hex << sf
@@ -256,8 +256,8 @@ TEST(Fragment, BlendOverFastPathIsExact) {
         }
         RasterState rs;
         rs.blend = true;
-        rs.blend_src_rgb = rs.blend_src_a = GL_SRC_ALPHA;
-        rs.blend_dst_rgb = rs.blend_dst_a = GL_ONE_MINUS_SRC_ALPHA;
+        rs.blend_state.src_rgb = rs.blend_state.src_a = GL_SRC_ALPHA;
+        rs.blend_state.dst_rgb = rs.blend_state.dst_a = GL_ONE_MINUS_SRC_ALPHA;
         DrawCall dc{&rs, &t.fb};
         fill_screen(dc, 0.5f, {200 / 255.0f, 10 / 255.0f, 1.0f, a / 255.0f});
         const double ar = a / 255.0;
@@ -303,10 +303,10 @@ TEST(Fragment, ColorMaskEveryCombinationEveryFormat) {
           rs.color_write[k] = (mask >> k) & 1;
         rs.blend = blend; // ONE, ZERO: must behave like no blending
         if (blend) {
-          rs.blend_src_rgb = GL_SRC_ALPHA;
-          rs.blend_dst_rgb = GL_ZERO;
-          rs.blend_src_a = GL_ONE;
-          rs.blend_dst_a = GL_ZERO;
+          rs.blend_state.src_rgb = GL_SRC_ALPHA;
+          rs.blend_state.dst_rgb = GL_ZERO;
+          rs.blend_state.src_a = GL_ONE;
+          rs.blend_state.dst_a = GL_ZERO;
         }
         DrawCall dc{&rs, &t.fb};
         fill_screen(dc, 0.5f, {1.0f, 0.5f, 0.0f, 1.0f});
@@ -453,10 +453,10 @@ TEST(Fragment, KeySelection) {
   EXPECT_EQ(make_state_key(rs, fb).depth_path(), DepthPath::Generic);
   rs.blend = true; // ONE, ZERO, ADD is a plain store
   EXPECT_EQ(make_state_key(rs, fb).blend_path(), BlendPath::Off);
-  rs.blend_src_rgb = rs.blend_src_a = GL_SRC_ALPHA;
-  rs.blend_dst_rgb = rs.blend_dst_a = GL_ONE_MINUS_SRC_ALPHA;
+  rs.blend_state.src_rgb = rs.blend_state.src_a = GL_SRC_ALPHA;
+  rs.blend_state.dst_rgb = rs.blend_state.dst_a = GL_ONE_MINUS_SRC_ALPHA;
   EXPECT_EQ(make_state_key(rs, fb).blend_path(), BlendPath::Over);
-  rs.blend_eq_a = GL_MAX;
+  rs.blend_state.eq_a = GL_MAX;
   EXPECT_EQ(make_state_key(rs, fb).blend_path(), BlendPath::Generic);
   rs.color_write[3] = false;
   EXPECT_EQ(make_state_key(rs, fb).color_path(), ColorPath::Partial);

@@ -191,14 +191,14 @@ TEST(PerFragment, StencilWithDepthAgainstReference) {
         }
         RasterState rs;
         rs.stencil_test = true;
-        rs.stencil_func = kFuncs[fi];
-        rs.stencil_ref = variant == 2 ? 300 : 0x5a; // 300 clamps to 255
-        rs.stencil_value_mask = variant == 1 ? 0xf0u : 0xffffffffu;
-        rs.stencil_writemask = variant == 1 ? 0x3cu : 0xffffffffu;
+        rs.stencil.func = kFuncs[fi];
+        rs.stencil.ref = variant == 2 ? 300 : 0x5a; // 300 clamps to 255
+        rs.stencil.value_mask = variant == 1 ? 0xf0u : 0xffffffffu;
+        rs.stencil.writemask = variant == 1 ? 0x3cu : 0xffffffffu;
         // A different op for each outcome to tell them apart.
-        rs.stencil_fail = kStencilOps[oi];
-        rs.stencil_depth_fail = kStencilOps[(oi + 3) % 8];
-        rs.stencil_depth_pass = kStencilOps[(oi + 5) % 8];
+        rs.stencil.fail = kStencilOps[oi];
+        rs.stencil.depth_fail = kStencilOps[(oi + 3) % 8];
+        rs.stencil.depth_pass = kStencilOps[(oi + 5) % 8];
         rs.depth_test = variant != 2; // variant 2: depth off counts as passing
         DrawCall dc{&rs, &t.fb};
         fill_screen(dc, 0.5f, {1, 0, 0, 1});
@@ -210,7 +210,7 @@ TEST(PerFragment, StencilWithDepthAgainstReference) {
             const bool spass = ref_compare(kFuncs[fi], ref & vm, st0[i] & vm);
             const bool zpass = !rs.depth_test || !z_old[i];
             const GLenum op =
-                !spass ? rs.stencil_fail : (!zpass ? rs.stencil_depth_fail : rs.stencil_depth_pass);
+                !spass ? rs.stencil.fail : (!zpass ? rs.stencil.depth_fail : rs.stencil.depth_pass);
             const int nv = ref_stencil_op(op, st0[i], ref);
             const int expect = (st0[i] & ~wm) | (nv & wm);
             ASSERT_EQ(stencil_at(t, x, y), expect) << "func " << fi << " op " << oi << " variant "
@@ -229,7 +229,7 @@ TEST(PerFragment, NoStencilBufferPasses) {
   t.fb.stencil_bits = 0;
   RasterState rs;
   rs.stencil_test = true;
-  rs.stencil_func = GL_NEVER;
+  rs.stencil.func = GL_NEVER;
   DrawCall dc{&rs, &t.fb};
   fill_screen(dc, 0.5f, {0, 1, 0, 1});
   EXPECT_EQ(t.rgba(3, 3)[1], 255);
@@ -300,8 +300,8 @@ TEST(PerFragment, AlphaTestBeforeStencilAndDepth) {
   rs.alpha_ref = 0.5f;
   rs.depth_test = true;
   rs.stencil_test = true;
-  rs.stencil_depth_pass = GL_INCR;
-  rs.stencil_fail = GL_INCR;
+  rs.stencil.depth_pass = GL_INCR;
+  rs.stencil.fail = GL_INCR;
   DrawCall dc{&rs, &t.fb};
   fill_screen(dc, 0.25f, {1, 1, 1, 0.25f});
   for (int y = 0; y < 8; ++y)
@@ -332,8 +332,8 @@ TEST(PerFragment, LogicOpsThroughPipeline) {
         rs.logic_op = true;
         rs.logic_op_mode = op;
         rs.blend = true;
-        rs.blend_src_rgb = rs.blend_src_a = GL_ZERO;
-        rs.blend_dst_rgb = rs.blend_dst_a = GL_ONE;
+        rs.blend_state.src_rgb = rs.blend_state.src_a = GL_ZERO;
+        rs.blend_state.dst_rgb = rs.blend_state.dst_a = GL_ONE;
         if (partial) rs.color_write[1] = false;
         DrawCall dc{&rs, &t.fb};
         // 0x33, 0x5a, 0xcc, 0xa5 as colour.
@@ -416,8 +416,8 @@ TEST(PerFragment, OperationsOffOrInertChangeNothing) {
   RasterState base;
   base.depth_test = true;
   base.blend = true;
-  base.blend_src_rgb = base.blend_src_a = GL_SRC_ALPHA;
-  base.blend_dst_rgb = base.blend_dst_a = GL_ONE_MINUS_SRC_ALPHA;
+  base.blend_state.src_rgb = base.blend_state.src_a = GL_SRC_ALPHA;
+  base.blend_state.dst_rgb = base.blend_state.dst_a = GL_ONE_MINUS_SRC_ALPHA;
   RasterState inert = base;
   inert.alpha_test = true;   // ALWAYS
   inert.stencil_test = true; // ALWAYS, KEEP
@@ -425,8 +425,8 @@ TEST(PerFragment, OperationsOffOrInertChangeNothing) {
   inert.scissor[2] = inert.scissor[3] = 1 << 20;
   RasterState stencil_nowrite = base;
   stencil_nowrite.stencil_test = true;
-  stencil_nowrite.stencil_depth_pass = GL_INVERT;
-  stencil_nowrite.stencil_writemask = 0xff00u; // no bit of an 8-bit buffer
+  stencil_nowrite.stencil.depth_pass = GL_INVERT;
+  stencil_nowrite.stencil.writemask = 0xff00u; // no bit of an 8-bit buffer
   TestFb t0(16, 16);
   for (const RasterState* rs : {&inert, &stencil_nowrite}) {
     for (ShadePath s : {ShadePath::Const, ShadePath::Smooth}) {

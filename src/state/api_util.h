@@ -4,7 +4,7 @@
 
 #include <GL/gl.h>
 
-#include "core/context.h"
+#include "state/context.h"
 
 namespace pineda {
 
@@ -17,7 +17,7 @@ void record_error(Context* ctx, GLenum err, const char* func, GLenum offending =
 // nullptr when there is no context or when inside Begin/End (then INVALID_OPERATION is set).
 inline Context* outside_begin_end(const char* func) {
   Context* ctx = current_context();
-  if (ctx != nullptr && ctx->begin_mode != kOutsideBeginEnd) {
+  if (ctx != nullptr && ctx->imm.mode != kOutsideBeginEnd) {
     record_error(ctx, GL_INVALID_OPERATION, func);
     return nullptr;
   }

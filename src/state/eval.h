@@ -1,10 +1,10 @@
-// Evaluator state (GL 2.1 §5.1, Table 6.28) that src/state/eval.cpp owns: the nine
+// Evaluator state (GL 2.1 §5.1; Table 6.28 "Evaluators", the "eval" attribute group): the nine
 // one-dimensional and nine two-dimensional maps, their enables, AUTO_NORMAL and the grids.
+// Commands in eval.cpp.
 #pragma once
 
 #include <GL/gl.h>
 
-#include <memory>
 #include <vector>
 #include "core/limits.h"
 
@@ -37,8 +37,9 @@ struct EvalMap2 {
   std::vector<float> points; // R_ij at (i * vorder + j) * k, packed
 };
 
-struct EvalState {
-  EvalState();
+// EVAL_BIT: Table 6.28 (the map enables and AUTO_NORMAL are also "enable").
+struct EvalGroup {
+  EvalGroup();
   EvalMap1 map1[kEvalKindCount];
   EvalMap2 map2[kEvalKindCount];
   bool map1_enabled[kEvalKindCount] = {};
@@ -51,13 +52,7 @@ struct EvalState {
   GLint grid2_un = 1, grid2_vn = 1;
 };
 
-// What glPushAttrib saves: the enables (ENABLE_BIT and EVAL_BIT) and, for EVAL_BIT, a copy of
-// the whole evaluator state (shared, so frames without EVAL_BIT copy nothing large).
-struct EvalAttrib {
-  bool map1_enabled[kEvalKindCount] = {};
-  bool map2_enabled[kEvalKindCount] = {};
-  bool auto_normal = false;
-  std::shared_ptr<const EvalState> state;
-};
+struct StateArea;
+extern const StateArea kEvalArea; // eval.cpp
 
 } // namespace pineda

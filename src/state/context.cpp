@@ -1,10 +1,10 @@
 // Context lifetime, the per-thread current context, and the error helper.
-#include "core/context.h"
+#include "state/context.h"
 
 #include <cstdio>
 #include <cstdlib>
 
-#include "core/api_util.h"
+#include "state/api_util.h"
 #include "dispatch.h"
 #include "geometry/draw_cache.h"
 
@@ -26,9 +26,7 @@ Context::Context() : Context(std::make_shared<SharedObjects>()) {}
 
 Context::Context(std::shared_ptr<SharedObjects> objects)
     : shared(std::move(objects)), buffers(shared->buffers) {
-  for (auto& t : arrays.texcoord)
-    t = ClientArray{false, 4, GL_FLOAT, 0, nullptr, 0};
-  imm.reserve(1024);
+  imm.verts.reserve(1024);
 }
 
 Context::~Context() = default;
