@@ -9,7 +9,7 @@
 
 #include <cstddef>
 
-#include "state/context.h"
+#include "geometry/input_vertex.h"
 #include "geometry/clip.h"
 #include "geometry/light_eval.h"
 #include "core/vertex.h"

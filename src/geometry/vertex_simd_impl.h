@@ -13,7 +13,7 @@
 #include <cstdint>
 #include <cstring>
 
-#include "state/context.h"
+#include "geometry/input_vertex.h"
 #include "geometry/clip.h"
 #include "geometry/light_eval.h"
 #include "core/vertex.h"

@@ -1,6 +1,6 @@
-// The back end's interface: the front end derives a RasterState from GL state at draw time
-// (validate.cpp), transforms vertices into PVertex arrays, and calls draw_primitives. Everything
-// from primitive assembly to the framebuffer lives behind this header.
+// The rasterizer's interface: one draw's state, surfaces and rows (DrawCall), and the
+// rasterization of one primitive. Primitive assembly (geometry/assemble.h) calls it; the state
+// is derived by the state layer (core/raster_state.h) and handed down by the draw home.
 #pragma once
 
 #include <GL/gl.h>
@@ -32,18 +32,10 @@ struct DrawCall {
   float* stipple_counter = nullptr;
   // With RasterState::count_samples, draw_primitives adds the samples that passed here.
   uint64_t* samples_passed = nullptr;
-  // The context's worker threads (workers.h): draw_primitives shares a large draw among them.
-  // Null: the calling thread draws everything.
-  RasterWorkers* workers = nullptr;
-  // The rows this call rasterizes; draw_primitives sets it for each worker's share.
+  // The rows this call rasterizes: all, or a worker's share of a draw shared by bands
+  // (schedule.h).
   Bands bands;
 };
-
-// Primitive assembly, clipping, culling and rasterization of `count` vertices in `mode`
-// (GL_POINTS .. GL_POLYGON). With indices == nullptr the vertices are taken in order
-// verts[0..count); otherwise verts[indices[i]]. Incomplete primitives are ignored (GL 2.1 §2.6.1).
-void draw_primitives(const DrawCall& dc, GLenum mode, const PVertex* verts, const uint32_t* indices,
-                     size_t count);
 
 // Rasterize one primitive whose vertices have valid window coordinates inside the guard
 // band. `provoking` supplies the colour slots under flat shading (GL 2.1 §2.14.7).

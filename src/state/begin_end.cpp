@@ -5,7 +5,7 @@
 #include "state/api_util.h"
 #include "core/normalize.h"
 #include "dispatch.h"
-#include "geometry/geometry.h"
+#include "state/draw_call.h"
 #include "state/area.h"
 
 namespace pineda {

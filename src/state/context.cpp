@@ -6,7 +6,6 @@
 
 #include "state/api_util.h"
 #include "dispatch.h"
-#include "geometry/draw_cache.h"
 
 namespace pineda {
 
@@ -27,6 +26,17 @@ Context::Context() : Context(std::make_shared<SharedObjects>()) {}
 Context::Context(std::shared_ptr<SharedObjects> objects)
     : shared(std::move(objects)), buffers(shared->buffers) {
   imm.verts.reserve(1024);
+  // What the draw home reads of the derived state and where it draws (draw/draw.h).
+  DrawSources& src = draw.src;
+  src.raster = &raster;
+  src.raster_serial = &raster_serial;
+  src.mvp = &mvp;
+  src.modelview = &modelview_matrix;
+  src.light = &light_setup;
+  src.tex = &texpipe.vertex;
+  src.fb = &fb;
+  src.workers = &workers;
+  src.samples_passed = &queries.samples_passed;
 }
 
 Context::~Context() = default;

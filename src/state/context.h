@@ -17,6 +17,7 @@
 #include "core/limits.h"
 #include "core/raster_state.h"
 #include "framebuffer/framebuffer.h"
+#include "draw/draw.h"
 #include "raster/workers.h"
 #include "state/attrib.h"
 #include "state/current.h"
@@ -76,8 +77,6 @@ enum ColorBufferBit : uint32_t {
   kColorBufferBackLeft = 1u << 2,
   kColorBufferBackRight = 1u << 3,
 };
-
-struct DrawCache;
 
 struct Context {
   Context();
@@ -150,17 +149,17 @@ struct Context {
   // SharedObjects::texture_generation at the last validation (validate.cpp).
   uint64_t validated_generation = ~uint64_t{0};
   RasterState raster;
-  uint64_t raster_serial = 0; // advanced by every change of `raster`
-  glm::mat4 mvp{1.0f};        // projection * modelview
-  LightSetup light_setup;     // the lighting area's (lighting.cpp)
-  TexPipeDerived texpipe;     // the texture area's (validate_texpipe.cpp)
-  // The per-draw setup kept across draws (geometry/draw_cache.h, transform.cpp); made at the
-  // first draw.
-  std::unique_ptr<DrawCache> draw_cache;
+  uint64_t raster_serial = 0;       // advanced by every change of `raster`
+  glm::mat4 mvp{1.0f};              // projection * modelview
+  glm::mat4 modelview_matrix{1.0f}; // the model-view stack's top, where the draws read it
+  LightSetup light_setup;           // the lighting area's (lighting.cpp)
+  TexPipeDerived texpipe;           // the texture area's (validate_texpipe.cpp)
+
+  // What the draw home keeps across draws (draw/draw.h): the draw cache, processed vertices.
+  DrawContext draw;
 
   // Scratch space reused across draws so the hot path does not allocate.
   std::vector<InputVertex> fetch_scratch;
-  std::vector<PVertex> pvert_scratch;
   std::vector<uint32_t> index_scratch;
 
   // Worker threads sharing large draws and clears (src/raster/workers.h), started on first use.

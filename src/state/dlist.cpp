@@ -14,7 +14,7 @@
 #include "state/api_util.h"
 #include "dispatch.h"
 #include "state/area.h"
-#include "geometry/geometry.h"
+#include "state/draw_call.h"
 #include "state/dlist_internal.h"
 
 namespace pineda {

@@ -11,7 +11,7 @@
 #include "state/api_util.h"
 #include "core/normalize.h"
 #include "dispatch.h"
-#include "geometry/fetch.h"
+#include "state/fetch.h"
 #include "state/dlist_internal.h"
 
 namespace pineda {

@@ -8,9 +8,11 @@
 #include "state/api_util.h"
 #include "dispatch.h"
 #include "framebuffer/read_pixels.h"
-#include "geometry/geometry.h"
+#include "state/draw_call.h"
+#include "state/validate.h"
 #include "pixel/pixel_draw.h"
 #include "pixel/unpack.h"
+#include "draw/draw_buffers.h"
 #include "state/draw_read_buffer.h"
 #include "state/select.h"
 
@@ -41,6 +43,29 @@ PixelPlacement placement_at(const Context* ctx, int w, int h) {
   return p;
 }
 
+// The window pixels the groups of `p` can reach (§3.6.4): for FRONT_AND_BACK, whose first pass
+// keeps their depth and stencil values (draw/draw_buffers.h). A pixel more on each side.
+DrawRegion placement_region(const PixelPlacement& p) {
+  const double x0 = p.x + double(p.zoom_x) * double(p.col0);
+  const double x1 = p.x + double(p.zoom_x) * double(p.col0 + p.w);
+  const double y0 = p.y + double(p.zoom_y) * double(p.row0);
+  const double y1 = p.y + double(p.zoom_y) * double(p.row0 + p.h);
+  if (!std::isfinite(x0) || !std::isfinite(x1) || !std::isfinite(y0) || !std::isfinite(y1))
+    return {INT32_MIN, INT32_MIN, INT32_MAX, INT32_MAX};
+  const auto to_int = [](double v) { return static_cast<int>(std::clamp(v, -1e9, 1e9)); };
+  return {to_int(std::floor(std::min(x0, x1)) - 1), to_int(std::floor(std::min(y0, y1)) - 1),
+          to_int(std::ceil(std::max(x0, x1)) + 1), to_int(std::ceil(std::max(y0, y1)) + 1)};
+}
+
+// Runs draw() (which returns the samples that passed) once per draw buffer (GL 2.1 §4.2.1);
+// occlusion queries count the primary pass.
+template <typename Draw> void each_draw_buffer(Context* ctx, const DrawRegion& region, Draw draw) {
+  for_each_draw_buffer(ctx->fb, ctx->raster, region, [&](bool primary) {
+    const uint64_t samples = draw();
+    if (primary) ctx->queries.samples_passed += samples;
+  });
+}
+
 // Draws `h` rows of `w` groups in strips of rows; unpack(rows, row_count, out) fills one strip
 // of colours, depths or indices and draw(placement, data) sends it on.
 template <typename T, typename Unpack, typename Draw>
@@ -65,8 +90,8 @@ void draw_color_strip(Context* ctx, const PixelPlacement& p, const float* rgba) 
   r.rgba = rgba;
   r.z = ctx->current.raster_pos.win[2];
   r.raster = &ctx->current.raster_pos;
-  for_each_draw_buffer(
-      ctx, [&] { ctx->queries.samples_passed += draw_pixel_rect(ctx->raster, ctx->fb, r); });
+  each_draw_buffer(ctx, placement_region(p),
+                   [&] { return draw_pixel_rect(ctx->raster, ctx->fb, r); });
 }
 
 void draw_depth_strip(Context* ctx, const PixelPlacement& p, const float* depth) {
@@ -75,8 +100,8 @@ void draw_depth_strip(Context* ctx, const PixelPlacement& p, const float* depth)
   r.depth = depth;
   std::copy(ctx->current.raster_pos.color, ctx->current.raster_pos.color + 4, r.color);
   r.raster = &ctx->current.raster_pos;
-  for_each_draw_buffer(
-      ctx, [&] { ctx->queries.samples_passed += draw_pixel_rect(ctx->raster, ctx->fb, r); });
+  each_draw_buffer(ctx, placement_region(p),
+                   [&] { return draw_pixel_rect(ctx->raster, ctx->fb, r); });
 }
 
 // The part of the w x h rectangle at (x, y) inside the framebuffer.
@@ -247,10 +272,15 @@ void GLAPIENTRY Bitmap(GLsizei width, GLsizei height, GLfloat xorig, GLfloat yor
       for (int c = 0; c < 3; ++c)
         color[c] += rp.color2[c];
     // Occlusion queries count bitmap fragments too (GL 2.1 §4.1.7).
-    for_each_draw_buffer(ctx, [&] {
-      ctx->queries.samples_passed += draw_bitmap(
-          ctx->raster, ctx->fb, corner(rp.win[0] - xorig + kEps), corner(rp.win[1] - yorig + kEps),
-          width, height, bits.data(), color, rp.win[2], rp);
+    const int x = corner(rp.win[0] - xorig + kEps), y = corner(rp.win[1] - yorig + kEps);
+    const DrawRegion region{
+        static_cast<int>(std::max<int64_t>(int64_t{x} - 1, INT32_MIN)),
+        static_cast<int>(std::max<int64_t>(int64_t{y} - 1, INT32_MIN)),
+        static_cast<int>(std::min<int64_t>(int64_t{x} + width + 1, INT32_MAX)),
+        static_cast<int>(std::min<int64_t>(int64_t{y} + height + 1, INT32_MAX))};
+    each_draw_buffer(ctx, region, [&] {
+      return draw_bitmap(ctx->raster, ctx->fb, x, y, width, height, bits.data(), color, rp.win[2],
+                         rp);
     });
   }
   rp.win[0] += xmove;

@@ -164,23 +164,6 @@ void select_color_buffers(Context* ctx) {
   mark_dirty(ctx, kDirtyFramebuffer);
 }
 
-void DepthStencilSnapshot::save(const Context* ctx) {
-  const Framebuffer& fb = ctx->fb;
-  const RasterState& rs = ctx->raster;
-  const size_t n = static_cast<size_t>(fb.width) * static_cast<size_t>(fb.height);
-  // Only buffers the pass can write: depth with the test and DEPTH_WRITEMASK on, stencil
-  // with the test on and a non-zero write mask (GL 2.1 §4.1.5, §4.1.6, §4.2.2).
-  if (fb.depth != nullptr && rs.depth_test && rs.depth_write) depth.assign(fb.depth, fb.depth + n);
-  if (fb.stencil != nullptr && rs.stencil_test && (rs.stencil.writemask & 0xffu) != 0)
-    stencil.assign(fb.stencil, fb.stencil + n);
-}
-
-void DepthStencilSnapshot::restore(Context* ctx) const {
-  Framebuffer& fb = ctx->fb;
-  if (!depth.empty()) std::copy(depth.begin(), depth.end(), fb.depth);
-  if (!stencil.empty()) std::copy(stencil.begin(), stencil.end(), fb.stencil);
-}
-
 namespace exec {
 
 void GLAPIENTRY DrawBuffer(GLenum buf) {

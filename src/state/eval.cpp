@@ -16,7 +16,7 @@
 #include "state/api_util.h"
 #include "dispatch.h"
 #include "state/area.h"
-#include "geometry/geometry.h"
+#include "state/draw_call.h"
 #include "state/eval.h"
 
 namespace pineda {

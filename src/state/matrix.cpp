@@ -159,9 +159,11 @@ bool get_transform(Context& ctx, GLenum pname, QueryValues& out) {
   }
 }
 
-// The composite matrix (§2.11): projection * modelview.
+// The composite matrix (§2.11): projection * modelview; and the model-view matrix itself at an
+// address that does not move with the stack (the draws' DrawSources).
 void derive_transform(Context& ctx, uint32_t) {
   ctx.mvp = ctx.projection.top() * ctx.modelview.top();
+  ctx.modelview_matrix = ctx.modelview.top();
 }
 
 constexpr Capability kTransformCaps[] = {

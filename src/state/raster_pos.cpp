@@ -7,7 +7,8 @@
 
 #include "state/api_util.h"
 #include "dispatch.h"
-#include "geometry/geometry.h"
+#include "state/draw_call.h"
+#include "state/validate.h"
 #include "geometry/light_eval.h"
 #include "state/select.h"
 

@@ -1,6 +1,6 @@
 // Selection (GL 2.1 §5.2) and feedback (§5.3): glRenderMode, the selection array and name
 // stack, the feedback array and glPassThrough, and the helpers that write hit records and
-// feedback values. The primitives themselves come from geometry/feedback.cpp.
+// feedback values. The primitives themselves come from the draw home (draw/feedback.cpp).
 #include <cmath>
 
 #include "state/api_util.h"
@@ -67,12 +67,6 @@ Context* name_stack_context(const char* func) {
   return ctx;
 }
 
-} // namespace
-
-bool render_mode_is_render(const Context* ctx) {
-  return ctx->render_mode.mode == GL_RENDER;
-}
-
 void select_record_hit(RenderModeState& rm, float zmin, float zmax) {
   rm.hit = true;
   if (zmin < rm.hit_min_z) rm.hit_min_z = zmin;
@@ -101,6 +95,23 @@ void feedback_vertex(RenderModeState& rm, const float win[3], float clip_w, cons
   if (t == GL_3D_COLOR) return;
   for (int k = 0; k < 4; ++k)
     feedback_value(rm, tex[k]);
+}
+
+} // namespace
+
+bool render_mode_is_render(const Context* ctx) {
+  return ctx->render_mode.mode == GL_RENDER;
+}
+
+void RenderModeRecords::hit(float zmin, float zmax) {
+  select_record_hit(rm_, zmin, zmax);
+}
+void RenderModeRecords::value(float v) {
+  feedback_value(rm_, v);
+}
+void RenderModeRecords::vertex(const float win[3], float clip_w, const float color[4],
+                               const float tex[4]) {
+  feedback_vertex(rm_, win, clip_w, color, tex);
 }
 
 void feedback_raster_token(Context* ctx, GLenum token, const float win[4], const float color[4],

@@ -10,12 +10,12 @@
 #include <unordered_map>
 
 #include "core/vertex.h"
+#include "draw/draw.h"
 #include "core/limits.h"
 
 namespace pineda {
 
 struct Context;
-struct InputVertex;
 
 // RENDER_MODE and the selection and feedback state of GL 2.1 Table 6.31 (§5.2, §5.3).
 struct RenderModeState {
@@ -62,11 +62,22 @@ struct QueryState {
 // §5.2, §5.3): draws, clears, accumulation and pixel rectangles update no pixel.
 bool render_mode_is_render(const Context* ctx);
 
-// The draw path in SELECT or FEEDBACK mode (geometry/feedback.cpp): the `n` transformed
-// vertices `verts` (from `in`) are assembled in `mode`, clipped and culled like a draw, and
-// the primitives become selection hits or feedback values instead of fragments.
-void select_feedback_draw(Context* ctx, const InputVertex* in, PVertex* verts, size_t n,
-                          GLenum mode, const uint32_t* indices, size_t count);
+// The selection or feedback state as the draw home writes into it (draw/draw.h): what the
+// state layer hands down with a draw in SELECT or FEEDBACK mode.
+class RenderModeRecords final : public RenderRecords {
+public:
+  explicit RenderModeRecords(RenderModeState& rm) : rm_(rm) {}
+  bool selecting() const override { return rm_.mode == GL_SELECT; }
+  bool textured() const override {
+    return rm_.feedback_type == GL_3D_COLOR_TEXTURE || rm_.feedback_type == GL_4D_COLOR_TEXTURE;
+  }
+  void hit(float zmin, float zmax) override;
+  void value(float v) override;
+  void vertex(const float win[3], float clip_w, const float color[4], const float tex[4]) override;
+
+private:
+  RenderModeState& rm_;
+};
 
 // GL 2.1 §5.3: glBitmap, glDrawPixels and glCopyPixels in FEEDBACK mode with a valid raster
 // position write `token` (GL_BITMAP_TOKEN, GL_DRAW_PIXEL_TOKEN or GL_COPY_PIXEL_TOKEN) and the
@@ -79,17 +90,6 @@ void feedback_raster_token(Context* ctx, GLenum token, const float win[4], const
 // GL 2.1 §5.2: a RasterPos (or WindowPos) whose position is valid causes a selection hit at
 // window depth `win_z`. Does nothing outside SELECT mode.
 void select_raster_hit(Context* ctx, float win_z);
-
-// Selection: one primitive that survived clipping (and culling) hit, with these window z
-// extremes (select.cpp).
-void select_record_hit(RenderModeState& rm, float zmin, float zmax);
-
-// Feedback: append one value; beyond the buffer's size the overflow flag is set instead.
-void feedback_value(RenderModeState& rm, float v);
-
-// Feedback: one vertex of the current feedback type (Table 5.2).
-void feedback_vertex(RenderModeState& rm, const float win[3], float clip_w, const float color[4],
-                     const float tex[4]);
 
 struct StateArea;
 extern const StateArea kSelectArea; // select.cpp

@@ -24,7 +24,7 @@ void validate_changed_state(Context* ctx) {
     if (area->derive != nullptr && (dirty & area->derive_on) != 0) area->derive(*ctx, dirty);
   derive_raster_state(*ctx, dirty);
   ctx->dirty = 0;
-  ++ctx->raster_serial; // the draw cache (transform.cpp) is stale
+  ++ctx->raster_serial; // the draw cache (draw/draw_cache.h) is stale
 }
 
 } // namespace pineda

@@ -8,8 +8,8 @@
 #include "state/api_util.h"
 #include "dispatch.h"
 #include "state/area.h"
-#include "geometry/fetch.h"
-#include "geometry/geometry.h"
+#include "state/fetch.h"
+#include "state/draw_call.h"
 
 namespace pineda {
 

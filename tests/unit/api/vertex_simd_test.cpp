@@ -204,7 +204,7 @@ TEST(VertexSimd, LitPowMatchesDoublePow) {
   EXPECT_EQ(pineda::lit_pow(0.0f, 40.0f), 0.0f);
 }
 
-// A DrawArrays of independent triangles longer than one slice (transform.cpp draws such a draw
+// A DrawArrays of independent triangles longer than one slice (draw/draw.cpp draws such a draw
 // a slice of vertices at a time) gives the pixels and the sample count of the same triangles
 // drawn by calls short enough to be drawn whole.
 class SlicedDrawTest : public GLTest {};

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "fragment/fragment_ops.h"
+#include "geometry/assemble.h"
 #include "raster_test_util.h"
 
 namespace pineda {

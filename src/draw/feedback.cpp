@@ -1,13 +1,13 @@
 // The draw path in SELECT and FEEDBACK mode (GL 2.1 §5.2, §5.3): the same assembly,
-// clipping, culling and polygon-mode interpretation as a rendered draw (assemble.cpp,
+// clipping, culling and polygon-mode interpretation as a rendered draw (geometry/assemble.cpp,
 // clip.cpp, cull.h), with sinks that record selection hits or write feedback values instead
-// of rasterizing.
+// of rasterizing, into the records the state layer handed down (draw.h RenderRecords).
 #include <algorithm>
 #include <initializer_list>
 
-#include "state/context.h"
+#include "draw/feedback.h"
+#include "geometry/assemble.h"
 #include "geometry/cull.h"
-#include "state/select.h"
 
 namespace pineda {
 
@@ -17,20 +17,20 @@ namespace {
 // its depth range is that of its post-clipping vertices.
 class SelectSink final : public PrimitiveSink {
 public:
-  explicit SelectSink(RenderModeState& rm) : rm_(rm) {}
+  explicit SelectSink(RenderRecords& records) : records_(records) {}
   void triangle(const PVertex& a, const PVertex& b, const PVertex& c, const PVertex&,
                 bool) override {
     const float zmin = std::min({a.win[2], b.win[2], c.win[2]});
     const float zmax = std::max({a.win[2], b.win[2], c.win[2]});
-    select_record_hit(rm_, zmin, zmax);
+    records_.hit(zmin, zmax);
   }
   void line(const PVertex& a, const PVertex& b, const PVertex&) override {
-    select_record_hit(rm_, std::min(a.win[2], b.win[2]), std::max(a.win[2], b.win[2]));
+    records_.hit(std::min(a.win[2], b.win[2]), std::max(a.win[2], b.win[2]));
   }
-  void point(const PVertex& p) override { select_record_hit(rm_, p.win[2], p.win[2]); }
+  void point(const PVertex& p) override { records_.hit(p.win[2], p.win[2]); }
 
 private:
-  RenderModeState& rm_;
+  RenderRecords& records_;
 };
 
 // GL 2.1 §5.3, Figure 5.2: POINT_TOKEN vertex, LINE_TOKEN or LINE_RESET_TOKEN and two
@@ -38,27 +38,27 @@ private:
 // provoking vertex's colour (§2.14.7 comes before clipping, whose results feedback returns).
 class FeedbackSink final : public PrimitiveSink {
 public:
-  FeedbackSink(RenderModeState& rm, bool flat) : rm_(rm), flat_(flat) {}
+  FeedbackSink(RenderRecords& records, bool flat) : records_(records), flat_(flat) {}
 
   // The next line segment starts with a reset line stipple counter (GL 2.1 §3.4.2, §3.5.4).
   void reset_stipple() { reset_ = true; }
 
   void triangle(const PVertex& a, const PVertex& b, const PVertex& c, const PVertex& pv,
                 bool) override {
-    feedback_value(rm_, static_cast<float>(GL_POLYGON_TOKEN));
-    feedback_value(rm_, 3.0f);
+    records_.value(static_cast<float>(GL_POLYGON_TOKEN));
+    records_.value(3.0f);
     vertex(a, pv);
     vertex(b, pv);
     vertex(c, pv);
   }
   void line(const PVertex& a, const PVertex& b, const PVertex& pv) override {
-    feedback_value(rm_, static_cast<float>(reset_ ? GL_LINE_RESET_TOKEN : GL_LINE_TOKEN));
+    records_.value(static_cast<float>(reset_ ? GL_LINE_RESET_TOKEN : GL_LINE_TOKEN));
     reset_ = false;
     vertex(a, pv);
     vertex(b, pv);
   }
   void point(const PVertex& p) override {
-    feedback_value(rm_, static_cast<float>(GL_POINT_TOKEN));
+    records_.value(static_cast<float>(GL_POINT_TOKEN));
     vertex(p, p);
   }
 
@@ -67,10 +67,10 @@ private:
   // colour and the unit 0 texture coordinates.
   void vertex(const PVertex& v, const PVertex& pv) {
     const float* color = (flat_ ? pv : v).attr + kAttrColor;
-    feedback_vertex(rm_, v.win, v.clip[3], color, v.attr + kAttrTex0);
+    records_.vertex(v.win, v.clip[3], color, v.attr + kAttrTex0);
   }
 
-  RenderModeState& rm_;
+  RenderRecords& records_;
   bool flat_;
   bool reset_ = false;
 };
@@ -137,38 +137,34 @@ void feedback_primitives(FeedbackSink& sink, const DrawCall& dc, GLenum mode, co
 
 } // namespace
 
-void select_feedback_draw(Context* ctx, const InputVertex* in, PVertex* verts, size_t n,
-                          GLenum mode, const uint32_t* indices, size_t count) {
-  RenderModeState& rm = ctx->render_mode;
-  RasterState rs = ctx->raster;
+void select_feedback_draw(const DrawInput& in, const DrawSources& src, PVertex* verts) {
+  RenderRecords& records = *in.records;
+  RasterState rs = *src.raster;
   DrawCall dc;
   dc.state = &rs;
-  dc.fb = &ctx->fb;
-  if (rm.mode == GL_SELECT) {
+  dc.fb = src.fb;
+  if (records.selecting()) {
     // §5.2: selection is based on the polygon itself, whatever the polygon mode.
     rs.polygon_mode[0] = rs.polygon_mode[1] = GL_FILL;
-    SelectSink sink(rm);
-    draw_primitives_to(sink, dc, mode, verts, indices, count);
+    SelectSink sink(records);
+    draw_primitives_to(sink, dc, in.mode, verts, in.indices, in.count);
     return;
   }
-  if (rm.mode != GL_FEEDBACK) return;
-  const bool textured =
-      rm.feedback_type == GL_3D_COLOR_TEXTURE || rm.feedback_type == GL_4D_COLOR_TEXTURE;
   constexpr int kTexEnd = kAttrTex0 + 4;
-  if (textured && rs.attr_count < kTexEnd) {
+  if (records.textured() && rs.attr_count < kTexEnd) {
     // Unit 0's coordinates are not live in this draw (texturing is off): compute them here,
     // through the texture matrix (GL 2.1 §2.11.4), for feedback to report.
-    const glm::mat4& tm = ctx->texture_matrix[0].top();
-    for (size_t i = 0; i < n; ++i) {
-      const float* t = in[i].tex[0];
+    const glm::mat4& tm = *in.texture0;
+    for (size_t i = 0; i < in.n; ++i) {
+      const float* t = in.in[i].tex[0];
       for (int r = 0; r < 4; ++r)
         verts[i].attr[kAttrTex0 + r] =
             tm[0][r] * t[0] + tm[1][r] * t[1] + tm[2][r] * t[2] + tm[3][r] * t[3];
     }
     rs.attr_count = kTexEnd; // clipping interpolates them (§2.14.8)
   }
-  FeedbackSink sink(rm, rs.flat);
-  feedback_primitives(sink, dc, mode, verts, indices, count);
+  FeedbackSink sink(records, rs.flat);
+  feedback_primitives(sink, dc, in.mode, verts, in.indices, in.count);
 }
 
 } // namespace pineda

@@ -1,7 +1,7 @@
 // Vertex fetch: convert array elements to InputVertex (GL 2.1 §2.8). Each attribute is a
 // separate loop with the component type hoisted out, so the inner loop is a plain copy and
 // convert.
-#include "geometry/fetch.h"
+#include "state/fetch.h"
 
 #include <cstddef>
 #include <cstring>
@@ -193,7 +193,7 @@ bool fetch(Context* ctx, Elements el, size_t n, size_t max_element, uint32_t tex
   def.fog = ctx->current.fog_coord;
   def.edge = ctx->current.edge ? 1u : 0u;
   // Elements [k0, k1) of the draw: independent of each other, so a large draw's are split
-  // among the worker threads as the transform's are (transform.cpp).
+  // among the worker threads as the transform's are (draw/draw.cpp).
   const auto fill = [&](size_t k0, size_t k1) {
     const Elements sub = el.from(k0);
     const size_t m = k1 - k0;

@@ -1,4 +1,4 @@
-// The per-draw setup of the geometry and fragment stages, kept in the context across draws
+// The per-draw setup of the geometry and fragment stages, kept by the draw home across draws
 // while nothing it is derived from changes: a glBegin/glEnd of one triangle then pays for its
 // vertices and pixels only, not for rebuilding the state key, the block-loop selection and the
 // clip planes each time.
@@ -13,7 +13,7 @@
 namespace pineda {
 
 struct DrawCache {
-  // Context::raster_serial when `frag` and `clip` were made; ~0 never matches.
+  // DrawInput::raster_serial when `frag` and `clip` were made; ~0 never matches.
   uint64_t serial = ~uint64_t{0};
   Framebuffer surfaces; // the framebuffer fields prepare_fragments read, as they were then
   ClipSetup clip;
