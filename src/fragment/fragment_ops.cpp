@@ -6,7 +6,7 @@
 
 #include "fragment/blend_simd.h"
 #include "fragment/shade.h"
-#include "fragment/simd.h"
+#include "core/simd.h"
 #include "core/simd_level.h"
 
 #include <algorithm>

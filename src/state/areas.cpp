@@ -21,7 +21,7 @@ const StateArea* const kAreas[] = {
     &kRasterizationArea, // rasterization.h: Tables 6.12-6.14
     &kMultisampleArea,   // multisample.h: Table 6.15
     &kTextureEnvArea,    // texenv.h: Tables 6.15-6.19
-    &kTextureObjectArea, // texture/texture_object.h: Tables 6.16-6.19 bindings and objects
+    &kTextureObjectArea, // texture_object.h: Tables 6.16-6.19 bindings and objects
     &kFragmentArea,      // fragment_state.h: Tables 6.20-6.22
     &kAccumArea,         // fragment_state.h: Table 6.22
     &kFramebufferArea,   // draw_read_buffer.h: Tables 6.21, 6.35

@@ -35,7 +35,7 @@
 #include "state/transform.h"
 #include "state/varray.h"
 #include "state/viewport.h"
-#include "texture/texture_object.h"
+#include "state/texture_object.h"
 
 namespace pineda {
 
@@ -65,7 +65,7 @@ struct SharedObjects {
   // Texture objects (GL 2.1 §3.8.12) by name; name 0 is each context's default object.
   std::unordered_map<GLuint, std::unique_ptr<TextureObject>> textures;
   // Bumped on every change of any texture image or parameter (also of default objects), so
-  // views made by make_sampler_view (texture/sampler.h) know when to be remade.
+  // views made by make_sampler_view (state/texture_object.h) know when to be remade.
   uint64_t texture_generation = 0;
   DisplayLists lists; // src/state/dlist.cpp
 };

@@ -19,7 +19,7 @@
 #include "dispatch.h"
 #include "pixel/unpack.h"
 #include "state/dlist_internal.h"
-#include "texture/texture_internal.h"
+#include "state/texture_internal.h"
 
 namespace pineda {
 

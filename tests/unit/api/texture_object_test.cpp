@@ -10,7 +10,7 @@
 #include "api_fixture.h"
 #include "state/context.h"
 #include "texture/sampler.h"
-#include "texture/texture_object.h"
+#include "state/texture_object.h"
 
 namespace {
 

@@ -1,7 +1,7 @@
 // Texture objects (GL 2.1 §3.8.12): names, binding, deletion, priorities and residency; texture
 // parameters (§3.8.4, §3.8.14) and their queries (§6.1.3); the bindings part of
 // glPushAttrib(TEXTURE_BIT); the glGet values of the texture objects (Tables 6.17, 6.36).
-#include "texture/texture_object.h"
+#include "state/texture_object.h"
 
 #include <algorithm>
 #include <cmath>
@@ -10,7 +10,7 @@
 #include "state/api_util.h"
 #include "dispatch.h"
 #include "state/area.h"
-#include "texture/texture_internal.h"
+#include "state/texture_internal.h"
 
 namespace pineda {
 

@@ -1,12 +1,13 @@
-// Helpers shared by the texture command files (texture_object.cpp, tex_image.cpp,
-// tex_copy.cpp); not for use outside src/texture.
+// Helpers shared by the texture command files of the state layer (texture_object.cpp,
+// tex_image.cpp, tex_copy.cpp, tex_compressed.cpp, and the display-list savers of
+// dlist_save_texpix.cpp).
 #pragma once
 
 #include <GL/gl.h>
 
 #include "state/context.h"
-#include "texture/tex_format.h"
-#include "texture/texture_object.h"
+#include "state/tex_format.h"
+#include "state/texture_object.h"
 
 namespace pineda {
 

@@ -1,7 +1,9 @@
 // Texture objects (GL 2.1 §3.8.12) and their images (§3.8.1-§3.8.5), and the per-context
-// texture bindings. Objects live in SharedObjects (state/context.h); src/texture/texture_object.cpp
-// implements the commands that create, bind and delete them and set their parameters,
-// src/texture/tex_image.cpp the image specification commands.
+// texture bindings: GL state of the texture area (Tables 6.16-6.19). Objects live in
+// SharedObjects (state/context.h); texture_object.cpp implements the commands that create, bind
+// and delete them and set their parameters, tex_image.cpp, tex_copy.cpp and tex_compressed.cpp
+// the image commands, texture_view.cpp the sampler's view of a complete object
+// (texture/sampler.h, the back end).
 #pragma once
 
 #include <GL/gl.h>
@@ -14,6 +16,8 @@
 #include "texture/sampler.h"
 
 namespace pineda {
+
+struct Context;
 
 // One image of a texture object: a mipmap level of a 1D, 2D or 3D texture or of one cube face.
 // An image with width 0 is unspecified (§3.8.1: zero-sized images are allowed and unspecified).
@@ -67,6 +71,16 @@ struct TextureState {
   // Proxy targets keep only level state (sizes, formats), never texels.
   std::unique_ptr<TextureObject> proxies[kTexTargetCount];
 };
+
+// Snapshot of `tex` for one draw; false when `tex` is not complete (§3.8.10), in which case the
+// unit behaves as if texturing were disabled for it (§3.8.15). For depth textures, `base` is the
+// one DEPTH_TEXTURE_MODE selects (Luminance, Intensity or Alpha). The view points into `tex`'s
+// images: it stays valid until the next change of SharedObjects::texture_generation.
+bool make_sampler_view(const TextureObject& tex, SamplerView& out);
+
+// The object bound to `target` (GL_TEXTURE_1D/2D/3D/CUBE_MAP) of texture unit `unit` (default
+// object when 0 is bound); never null.
+const TextureObject* bound_texture(const Context* ctx, int unit, GLenum target);
 
 struct StateArea;
 // Texture bindings and limits for glGet, and the bindings with the bound objects' parameters

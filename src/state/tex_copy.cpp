@@ -10,8 +10,8 @@
 #include "dispatch.h"
 #include "framebuffer/read_pixels.h"
 #include "pixel/transfer.h"
-#include "texture/tex_format.h"
-#include "texture/texture_internal.h"
+#include "state/tex_format.h"
+#include "state/texture_internal.h"
 
 namespace pineda {
 

@@ -8,7 +8,7 @@
 
 #include "state/api_util.h"
 #include "dispatch.h"
-#include "texture/texture_internal.h"
+#include "state/texture_internal.h"
 
 namespace pineda {
 

@@ -1,7 +1,7 @@
 // Texture image specification from client memory (GL 2.1 §3.8.1, §3.8.2, §3.8.11):
 // glTexImage1D/2D/3D, glTexSubImage1D/2D/3D, proxies, automatic mipmap generation (§3.8.8), and
 // the image queries of §6.1.3-§6.1.4 (glGetTexLevelParameter, glGetTexImage).
-#include "texture/tex_image.h"
+#include "state/tex_image.h"
 
 #include <algorithm>
 #include <cstring>
@@ -12,8 +12,8 @@
 #include "state/api_util.h"
 #include "dispatch.h"
 #include "pixel/unpack.h"
-#include "texture/tex_format.h"
-#include "texture/texture_internal.h"
+#include "state/tex_format.h"
+#include "state/texture_internal.h"
 
 namespace pineda {
 
@@ -403,6 +403,26 @@ void store_region(TexImage& im, int dims, int x, int y, int z, int w, int h, int
         rgba_to_texels(f, groups + g * 4, w, &im.rgba[idx * 4]);
     }
   }
+}
+
+void downsample_image(const TexImage& src, TexImage& dst, int dims) {
+  const size_t count = size_t(dst.width) * size_t(dst.height) * size_t(dst.depth);
+  TexelImage from, to;
+  from.width = src.width, from.height = src.height, from.depth = src.depth;
+  from.border = src.border;
+  from.is_depth = src.is_depth;
+  to.width = dst.width, to.height = dst.height, to.depth = dst.depth;
+  to.border = dst.border;
+  if (src.is_depth) {
+    dst.z.assign(count, 0.0f);
+    from.z = src.z.data();
+    to.z_out = dst.z.data();
+  } else {
+    dst.rgba.assign(count * 4, 0);
+    from.rgba = src.rgba.data();
+    to.rgba_out = dst.rgba.data();
+  }
+  downsample_texels(from, to, dims);
 }
 
 void generate_mipmaps(TextureObject& tex, int face, int dims) {

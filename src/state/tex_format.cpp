@@ -1,5 +1,5 @@
 // Texture internal formats (GL 2.1 §3.8.1 Tables 3.15-3.17).
-#include "texture/tex_format.h"
+#include "state/tex_format.h"
 
 #include <algorithm>
 #include <cmath>

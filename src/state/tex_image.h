@@ -1,7 +1,7 @@
-// Texture image helpers shared between the image commands and the sampler.
+// Mipmap generation (GL 2.1 §3.8.8 GENERATE_MIPMAP) for the image commands.
 #pragma once
 
-#include "texture/texture_object.h"
+#include "state/texture_object.h"
 
 namespace pineda {
 
