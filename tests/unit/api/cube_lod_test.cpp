@@ -21,12 +21,24 @@ uint32_t level_face_colour(int level, int face) {
 // of the drawn square (Table 3.21's s and t running along x and y).
 void corner_direction(int face, float sx, float ty, float out[3]) {
   switch (face) {
-  case 0: out[0] = 1, out[1] = -ty, out[2] = -sx; break;
-  case 1: out[0] = -1, out[1] = -ty, out[2] = sx; break;
-  case 2: out[0] = sx, out[1] = 1, out[2] = ty; break;
-  case 3: out[0] = sx, out[1] = -1, out[2] = -ty; break;
-  case 4: out[0] = sx, out[1] = -ty, out[2] = 1; break;
-  default: out[0] = -sx, out[1] = -ty, out[2] = -1; break;
+  case 0:
+    out[0] = 1, out[1] = -ty, out[2] = -sx;
+    break;
+  case 1:
+    out[0] = -1, out[1] = -ty, out[2] = sx;
+    break;
+  case 2:
+    out[0] = sx, out[1] = 1, out[2] = ty;
+    break;
+  case 3:
+    out[0] = sx, out[1] = -1, out[2] = -ty;
+    break;
+  case 4:
+    out[0] = sx, out[1] = -ty, out[2] = 1;
+    break;
+  default:
+    out[0] = -sx, out[1] = -ty, out[2] = -1;
+    break;
   }
 }
 
