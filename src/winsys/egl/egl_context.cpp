@@ -8,8 +8,6 @@
 
 namespace pineda::egl {
 
-void release_surface(EglContext* ctx, EglSurface* s); // egl_surface.cpp
-
 namespace {
 
 // This thread's EGL binding (§3.7.3: a context is current to one thread at a time).

@@ -138,6 +138,8 @@ bool config_attrib(const EglConfig& c, EGLint attribute, EGLint* value);
 EglSurface* find_surface(EglDisplay* d, EGLSurface handle);
 // Frees a surface that no context is current on; otherwise marks it to be freed on release.
 void destroy_surface(EglDisplay* d, EglSurface* s);
+// ctx no longer draws to s: a surface destroyed meanwhile is freed once nothing is bound to it.
+void release_surface(EglContext* ctx, EglSurface* s);
 // Describes the surface's buffers to a context; refreshes a window's size first.
 void attach(EglContext* ctx, EglSurface& s);
 // A window's new size (EGL 1.5 §3.10.1: picked up at eglMakeCurrent and eglSwapBuffers); false

@@ -150,7 +150,6 @@ void destroy_surface(EglDisplay* d, EglSurface* s) {
     s->destroy_pending = true;
 }
 
-// A context released its surface: a surface destroyed meanwhile goes now (egl_context.cpp).
 void release_surface(EglContext* ctx, EglSurface* s) {
   if (s == nullptr) return;
   auto& bound = s->bound;

@@ -12,11 +12,6 @@
 
 #include "winsys/glx/glx_internal.h"
 
-extern "C" __GLXextFuncPtr glXGetProcAddressARB(const GLubyte* procName);
-extern "C" void glXSwapIntervalEXT(Display* dpy, GLXDrawable drawable, int interval);
-extern "C" int glXSwapIntervalMESA(unsigned int interval);
-extern "C" int glXGetSwapIntervalMESA(void);
-
 namespace {
 
 const __GLXapiExports* g_exports = nullptr;
