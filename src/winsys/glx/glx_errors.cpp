@@ -2,6 +2,11 @@
 #include "winsys/common/swap_pacing.h"
 #include "winsys/glx/glx_internal.h"
 
+// _XAllocIDs, LockDisplay and UnlockDisplay; this header also defines min and max macros.
+#include <X11/Xlibint.h>
+#undef min
+#undef max
+
 namespace pineda::glx {
 
 namespace {
@@ -63,10 +68,15 @@ void deliver_pending_error() {
 }
 
 XID alloc_xid(Display* dpy) {
-  const XID id = XAllocID(dpy);
-  // Xlib (over XCB) fetches the next id only when a request follows; two allocations in a row
-  // would otherwise trip its assertion. A no-op request is buffered, not a round trip.
-  XNoOp(dpy);
+  // XAllocID hands out Xlib's one prefetched id, which Xlib (over XCB) replaces only after a
+  // request of its own; an XAllocID from outside Xlib followed by another allocation (the
+  // application's XCreateWindow, or ours) trips its assertion, as SDL2 programs showed.
+  // _XAllocIDs asks XCB for fresh ids and leaves the prefetched one alone; it expects the
+  // display locked.
+  XID id = 0;
+  LockDisplay(dpy);
+  _XAllocIDs(dpy, &id, 1);
+  UnlockDisplay(dpy);
   return id;
 }
 
