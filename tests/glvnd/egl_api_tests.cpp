@@ -788,6 +788,28 @@ TEST_F(X11, PixmapSurfaceAndCopyBuffers) {
   XFreePixmap(x, pm);
 }
 
+TEST_F(X11, CloseDisplayWhileCurrent) {
+  // The application closes its X connection with a context current on a window surface: the
+  // display is terminated with it, GL renders nowhere, and nothing crashes.
+  Window win = window(config, 32, 32);
+  EGLSurface s = eglCreateWindowSurface(dpy, config, static_cast<EGLNativeWindowType>(win), nullptr);
+  ASSERT_NE(s, EGL_NO_SURFACE);
+  ASSERT_TRUE(eglMakeCurrent(dpy, s, s, ctx));
+  glClear(GL_COLOR_BUFFER_BIT);
+  windows.clear();
+  XCloseDisplay(x);
+  x = nullptr;
+  glClearColor(1, 0, 0, 1);
+  glClear(GL_COLOR_BUFFER_BIT);
+  glRectf(-1, -1, 1, 1);
+  glFinish();
+  EGLint v = 0;
+  EXPECT_FALSE(eglQuerySurface(dpy, s, EGL_WIDTH, &v));
+  EXPECT_EQ(eglGetError(), EGL_NOT_INITIALIZED);
+  EXPECT_TRUE(eglMakeCurrent(dpy, EGL_NO_SURFACE, EGL_NO_SURFACE, EGL_NO_CONTEXT));
+  EXPECT_TRUE(eglTerminate(dpy));
+}
+
 TEST_F(X11, DefaultDisplay) {
   // eglGetDisplay(EGL_DEFAULT_DISPLAY) with DISPLAY set is an X11 display Pineda opens.
   EGLDisplay d = eglGetDisplay(EGL_DEFAULT_DISPLAY);

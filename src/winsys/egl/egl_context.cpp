@@ -97,7 +97,7 @@ void terminate_objects(EglDisplay* d) {
       delete c;
   }
   for (EglSurface* s : std::vector<EglSurface*>(d->surfaces.begin(), d->surfaces.end()))
-    destroy_surface(d, s);
+    if (!s->destroy_pending) destroy_surface(d, s);
   for (EglSync* s : d->syncs)
     delete s;
   d->syncs.clear();

@@ -8,6 +8,11 @@
 #include "egl_generated.h"
 #include "winsys/egl/egl_internal.h"
 
+// XESetCloseDisplay is declared only here; this header also defines min and max macros.
+#include <X11/Xlibint.h>
+#undef min
+#undef max
+
 namespace pineda::egl {
 
 namespace {
@@ -44,6 +49,27 @@ EglDisplay* get_display(Platform platform, void* native, int screen) {
   d->screen = screen;
   displays().push_back(std::move(d));
   return displays().back().get();
+}
+
+// XCloseDisplay hook of an application's display: its EGL display is terminated and every
+// surface loses its X resources now, while the connection still works; a context current on
+// one renders nowhere until it is bound again (as GLX's displays, glx_config.cpp).
+int on_close_display(Display* dpy, XExtCodes*) {
+  std::lock_guard<std::mutex> lock(egl_mutex());
+  for (auto& d : displays()) {
+    if (d->dpy != dpy || d->own_dpy) continue;
+    for (EglSurface* s : d->surfaces) {
+      for (EglContext* ctx : s->bound)
+        winsys::unbind_buffers(ctx);
+      x11::release_images(*s);
+      s->dpy = nullptr;
+    }
+    terminate_objects(d.get());
+    d->initialized = false;
+    d->dpy = nullptr;
+    d->close_hooked = nullptr;
+  }
+  return 0;
 }
 
 // Whether an X server can be reached for the default display.
@@ -167,6 +193,11 @@ EGL_EXPORT EGLBoolean EGLAPIENTRY eglInitialize(EGLDisplay dpy, EGLint* major, E
         return fail(EGL_NOT_INITIALIZED, "eglInitialize", EGL_FALSE);
       }
       d->shm = x11::shm_available(d->dpy);
+      if (!d->own_dpy && d->close_hooked != d->dpy) {
+        if (XExtCodes* codes = XAddExtension(d->dpy))
+          XESetCloseDisplay(d->dpy, codes->extension, on_close_display);
+        d->close_hooked = d->dpy;
+      }
     }
     build_configs(d);
     d->initialized = true;

@@ -58,7 +58,9 @@ struct EglDisplay {
   bool own_dpy = false;   // opened by eglInitialize (EGL_DEFAULT_DISPLAY)
   bool initialized = false;
   bool shm = false;
+  Display* close_hooked = nullptr; // the connection whose XCloseDisplay hook is set
   std::vector<std::unique_ptr<EglConfig>> configs;
+  // Surfaces, also those destroyed while current (freed when released).
   std::unordered_set<struct EglSurface*> surfaces;
   std::unordered_set<struct EglContext*> contexts;
   std::unordered_set<struct EglSync*> syncs;

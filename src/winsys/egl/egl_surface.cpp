@@ -139,22 +139,28 @@ void free_surface(EglSurface* s) {
 
 EglSurface* find_surface(EglDisplay* d, EGLSurface handle) {
   auto* s = static_cast<EglSurface*>(handle);
-  return d->surfaces.count(s) != 0 ? s : nullptr;
+  // A surface destroyed while current stays in the display's set until it is released, but
+  // its handle is no longer valid (§3.5.5).
+  return d->surfaces.count(s) != 0 && !s->destroy_pending ? s : nullptr;
 }
 
 void destroy_surface(EglDisplay* d, EglSurface* s) {
-  d->surfaces.erase(s);
-  if (s->bound.empty())
+  if (s->bound.empty()) {
+    d->surfaces.erase(s);
     free_surface(s);
-  else
+  } else {
     s->destroy_pending = true;
+  }
 }
 
 void release_surface(EglContext* ctx, EglSurface* s) {
   if (s == nullptr) return;
   auto& bound = s->bound;
   bound.erase(std::remove(bound.begin(), bound.end(), ctx), bound.end());
-  if (s->destroy_pending && bound.empty()) free_surface(s);
+  if (s->destroy_pending && bound.empty()) {
+    s->display->surfaces.erase(s);
+    free_surface(s);
+  }
 }
 
 bool has_back_buffer(const EglSurface& s) {
