@@ -238,12 +238,11 @@ int run_scene_egl(const scenes::Scene& scene, const std::string& out_path, int r
     print_result(result);
     return code;
   };
-  if (o.accum_bits > 0) return fail("unsupported", "EGL configs have no accumulation buffer",
-                                    kExitUnsupported);
+  if (o.accum_bits > 0)
+    return fail("unsupported", "EGL configs have no accumulation buffer", kExitUnsupported);
   EGLDisplay dpy =
       eglGetPlatformDisplay(EGL_PLATFORM_SURFACELESS_MESA, EGL_DEFAULT_DISPLAY, nullptr);
-  if (dpy == EGL_NO_DISPLAY || !eglInitialize(dpy, nullptr, nullptr) ||
-      !eglBindAPI(EGL_OPENGL_API))
+  if (dpy == EGL_NO_DISPLAY || !eglInitialize(dpy, nullptr, nullptr) || !eglBindAPI(EGL_OPENGL_API))
     return fail("context_failed", "no surfaceless EGL display", kExitContext);
   const EGLint want[] = {EGL_SURFACE_TYPE, EGL_PBUFFER_BIT, EGL_RENDERABLE_TYPE, EGL_OPENGL_BIT,
                          EGL_NONE};
@@ -264,8 +263,9 @@ int run_scene_egl(const scenes::Scene& scene, const std::string& out_path, int r
     }
   }
   if (config == nullptr)
-    return fail("context_failed", "no config with alpha " + std::to_string(alpha) + ", depth " +
-                std::to_string(o.depth_bits) + ", stencil " + std::to_string(o.stencil_bits),
+    return fail("context_failed",
+                "no config with alpha " + std::to_string(alpha) + ", depth " +
+                    std::to_string(o.depth_bits) + ", stencil " + std::to_string(o.stencil_bits),
                 kExitContext);
   const EGLint size[] = {EGL_WIDTH, o.width, EGL_HEIGHT, o.height, EGL_NONE};
   EGLSurface surface = eglCreatePbufferSurface(dpy, config, size);

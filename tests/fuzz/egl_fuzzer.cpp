@@ -25,31 +25,99 @@ using pineda::fuzz::Input;
 constexpr int kMaxSurface = 64;
 
 // Attributes EGL calls take, with neighbours and values that matter.
-constexpr EGLint kAttribs[] = {
-    EGL_WIDTH, EGL_HEIGHT, EGL_LARGEST_PBUFFER, EGL_TEXTURE_FORMAT, EGL_TEXTURE_TARGET,
-    EGL_MIPMAP_TEXTURE, EGL_GL_COLORSPACE, EGL_VG_ALPHA_FORMAT, EGL_VG_COLORSPACE,
-    EGL_RENDER_BUFFER, EGL_CONFIG_ID, EGL_ALPHA_SIZE, EGL_DEPTH_SIZE, EGL_STENCIL_SIZE,
-    EGL_SAMPLES, EGL_SAMPLE_BUFFERS, EGL_SURFACE_TYPE, EGL_RENDERABLE_TYPE, EGL_CONFORMANT,
-    EGL_LEVEL, EGL_COLOR_BUFFER_TYPE, EGL_CONFIG_CAVEAT, EGL_MATCH_NATIVE_PIXMAP,
-    EGL_NATIVE_VISUAL_TYPE, EGL_TRANSPARENT_TYPE, EGL_MIN_SWAP_INTERVAL, EGL_MAX_SWAP_INTERVAL,
-    EGL_BUFFER_SIZE, EGL_RED_SIZE, EGL_CONTEXT_MAJOR_VERSION, EGL_CONTEXT_MINOR_VERSION,
-    EGL_CONTEXT_OPENGL_PROFILE_MASK, EGL_CONTEXT_OPENGL_DEBUG,
-    EGL_CONTEXT_OPENGL_FORWARD_COMPATIBLE, EGL_CONTEXT_OPENGL_ROBUST_ACCESS,
-    EGL_CONTEXT_OPENGL_RESET_NOTIFICATION_STRATEGY, EGL_CONTEXT_FLAGS_KHR, EGL_SWAP_BEHAVIOR,
-    EGL_MULTISAMPLE_RESOLVE, EGL_MIPMAP_LEVEL, EGL_CONTEXT_CLIENT_TYPE, EGL_SYNC_TYPE,
-    EGL_SYNC_STATUS, EGL_SYNC_CONDITION, EGL_PLATFORM_X11_SCREEN_KHR, 0, 0x1234};
-constexpr EGLint kValues[] = {
-    0, 1, 2, 3, 4, 5, 8, 16, 24, 32, -1, EGL_DONT_CARE, EGL_TRUE, EGL_FALSE, EGL_NONE,
-    EGL_PBUFFER_BIT, EGL_WINDOW_BIT, EGL_OPENGL_BIT, EGL_OPENGL_ES_BIT, EGL_NO_TEXTURE,
-    EGL_TEXTURE_RGB, EGL_TEXTURE_2D, EGL_GL_COLORSPACE_SRGB, EGL_GL_COLORSPACE_LINEAR,
-    EGL_BACK_BUFFER, EGL_SINGLE_BUFFER, EGL_RGB_BUFFER, EGL_LUMINANCE_BUFFER, EGL_SLOW_CONFIG,
-    EGL_CONTEXT_OPENGL_CORE_PROFILE_BIT, EGL_CONTEXT_OPENGL_COMPATIBILITY_PROFILE_BIT,
-    EGL_LOSE_CONTEXT_ON_RESET, EGL_BUFFER_PRESERVED, EGL_BUFFER_DESTROYED,
-    EGL_MULTISAMPLE_RESOLVE_BOX, 1 << 20, 0x7fffffff, INT32_MIN};
-constexpr EGLenum kEnums[] = {
-    EGL_OPENGL_API, EGL_OPENGL_ES_API, EGL_OPENVG_API, EGL_NONE, EGL_SYNC_FENCE,
-    EGL_SYNC_CL_EVENT, EGL_GL_TEXTURE_2D, EGL_DRAW, EGL_READ, EGL_VENDOR, EGL_VERSION,
-    EGL_EXTENSIONS, EGL_CLIENT_APIS, EGL_CORE_NATIVE_ENGINE, EGL_OPENVG_IMAGE, 0x1234};
+constexpr EGLint kAttribs[] = {EGL_WIDTH,
+                               EGL_HEIGHT,
+                               EGL_LARGEST_PBUFFER,
+                               EGL_TEXTURE_FORMAT,
+                               EGL_TEXTURE_TARGET,
+                               EGL_MIPMAP_TEXTURE,
+                               EGL_GL_COLORSPACE,
+                               EGL_VG_ALPHA_FORMAT,
+                               EGL_VG_COLORSPACE,
+                               EGL_RENDER_BUFFER,
+                               EGL_CONFIG_ID,
+                               EGL_ALPHA_SIZE,
+                               EGL_DEPTH_SIZE,
+                               EGL_STENCIL_SIZE,
+                               EGL_SAMPLES,
+                               EGL_SAMPLE_BUFFERS,
+                               EGL_SURFACE_TYPE,
+                               EGL_RENDERABLE_TYPE,
+                               EGL_CONFORMANT,
+                               EGL_LEVEL,
+                               EGL_COLOR_BUFFER_TYPE,
+                               EGL_CONFIG_CAVEAT,
+                               EGL_MATCH_NATIVE_PIXMAP,
+                               EGL_NATIVE_VISUAL_TYPE,
+                               EGL_TRANSPARENT_TYPE,
+                               EGL_MIN_SWAP_INTERVAL,
+                               EGL_MAX_SWAP_INTERVAL,
+                               EGL_BUFFER_SIZE,
+                               EGL_RED_SIZE,
+                               EGL_CONTEXT_MAJOR_VERSION,
+                               EGL_CONTEXT_MINOR_VERSION,
+                               EGL_CONTEXT_OPENGL_PROFILE_MASK,
+                               EGL_CONTEXT_OPENGL_DEBUG,
+                               EGL_CONTEXT_OPENGL_FORWARD_COMPATIBLE,
+                               EGL_CONTEXT_OPENGL_ROBUST_ACCESS,
+                               EGL_CONTEXT_OPENGL_RESET_NOTIFICATION_STRATEGY,
+                               EGL_CONTEXT_FLAGS_KHR,
+                               EGL_SWAP_BEHAVIOR,
+                               EGL_MULTISAMPLE_RESOLVE,
+                               EGL_MIPMAP_LEVEL,
+                               EGL_CONTEXT_CLIENT_TYPE,
+                               EGL_SYNC_TYPE,
+                               EGL_SYNC_STATUS,
+                               EGL_SYNC_CONDITION,
+                               EGL_PLATFORM_X11_SCREEN_KHR,
+                               0,
+                               0x1234};
+constexpr EGLint kValues[] = {0,
+                              1,
+                              2,
+                              3,
+                              4,
+                              5,
+                              8,
+                              16,
+                              24,
+                              32,
+                              -1,
+                              EGL_DONT_CARE,
+                              EGL_TRUE,
+                              EGL_FALSE,
+                              EGL_NONE,
+                              EGL_PBUFFER_BIT,
+                              EGL_WINDOW_BIT,
+                              EGL_OPENGL_BIT,
+                              EGL_OPENGL_ES_BIT,
+                              EGL_NO_TEXTURE,
+                              EGL_TEXTURE_RGB,
+                              EGL_TEXTURE_2D,
+                              EGL_GL_COLORSPACE_SRGB,
+                              EGL_GL_COLORSPACE_LINEAR,
+                              EGL_BACK_BUFFER,
+                              EGL_SINGLE_BUFFER,
+                              EGL_RGB_BUFFER,
+                              EGL_LUMINANCE_BUFFER,
+                              EGL_SLOW_CONFIG,
+                              EGL_CONTEXT_OPENGL_CORE_PROFILE_BIT,
+                              EGL_CONTEXT_OPENGL_COMPATIBILITY_PROFILE_BIT,
+                              EGL_LOSE_CONTEXT_ON_RESET,
+                              EGL_BUFFER_PRESERVED,
+                              EGL_BUFFER_DESTROYED,
+                              EGL_MULTISAMPLE_RESOLVE_BOX,
+                              1 << 20,
+                              0x7fffffff,
+                              INT32_MIN};
+constexpr EGLenum kEnums[] = {EGL_OPENGL_API,    EGL_OPENGL_ES_API,
+                              EGL_OPENVG_API,    EGL_NONE,
+                              EGL_SYNC_FENCE,    EGL_SYNC_CL_EVENT,
+                              EGL_GL_TEXTURE_2D, EGL_DRAW,
+                              EGL_READ,          EGL_VENDOR,
+                              EGL_VERSION,       EGL_EXTENSIONS,
+                              EGL_CLIENT_APIS,   EGL_CORE_NATIVE_ENGINE,
+                              EGL_OPENVG_IMAGE,  0x1234};
 
 struct State {
   EGLDisplay dpy = EGL_NO_DISPLAY;
@@ -113,8 +181,7 @@ void op(Input& in, State& s) {
   case 2: {
     EGLConfig list[8];
     const auto a = attribs<EGLint>(in);
-    if (eglChooseConfig(display(in, s), in.u8() & 1 ? a.data() : nullptr, list,
-                        in.u8() % 9, &n))
+    if (eglChooseConfig(display(in, s), in.u8() & 1 ? a.data() : nullptr, list, in.u8() % 9, &n))
       for (int i = 0; i < n; ++i)
         s.configs.push_back(list[i]);
     break;
@@ -137,8 +204,8 @@ void op(Input& in, State& s) {
     break;
   case 6: {
     const auto a = attribs<EGLint>(in);
-    EGLContext c = eglCreateContext(display(in, s), handle(in, s.configs),
-                                    handle(in, s.contexts), a.data());
+    EGLContext c =
+        eglCreateContext(display(in, s), handle(in, s.configs), handle(in, s.contexts), a.data());
     if (c != EGL_NO_CONTEXT) s.contexts.push_back(c);
     break;
   }
@@ -174,17 +241,26 @@ void op(Input& in, State& s) {
     break;
   case 16: {
     const auto a = attribs<EGLAttrib>(in);
-    EGLSync sync = eglCreateSync(display(in, s), pick(in, kEnums), in.u8() & 1 ? a.data() : nullptr);
+    EGLSync sync =
+        eglCreateSync(display(in, s), pick(in, kEnums), in.u8() & 1 ? a.data() : nullptr);
     if (sync != EGL_NO_SYNC) s.syncs.push_back(sync);
     break;
   }
   case 17: {
     const EGLSync sync = handle(in, s.syncs);
     switch (in.u8() % 4) {
-    case 0: eglDestroySync(display(in, s), sync); break;
-    case 1: eglClientWaitSync(display(in, s), sync, value(in), 0); break;
-    case 2: eglWaitSync(display(in, s), sync, value(in)); break;
-    default: eglGetSyncAttrib(display(in, s), sync, pick(in, kAttribs), &av); break;
+    case 0:
+      eglDestroySync(display(in, s), sync);
+      break;
+    case 1:
+      eglClientWaitSync(display(in, s), sync, value(in), 0);
+      break;
+    case 2:
+      eglWaitSync(display(in, s), sync, value(in));
+      break;
+    default:
+      eglGetSyncAttrib(display(in, s), sync, pick(in, kAttribs), &av);
+      break;
     }
     break;
   }
@@ -195,11 +271,21 @@ void op(Input& in, State& s) {
   }
   case 19:
     switch (in.u8() % 5) {
-    case 0: eglWaitClient(); break;
-    case 1: eglWaitNative(static_cast<EGLint>(pick(in, kEnums))); break;
-    case 2: eglReleaseThread(); break;
-    case 3: eglGetCurrentSurface(static_cast<EGLint>(pick(in, kEnums))); break;
-    default: eglGetError(); break;
+    case 0:
+      eglWaitClient();
+      break;
+    case 1:
+      eglWaitNative(static_cast<EGLint>(pick(in, kEnums)));
+      break;
+    case 2:
+      eglReleaseThread();
+      break;
+    case 3:
+      eglGetCurrentSurface(static_cast<EGLint>(pick(in, kEnums)));
+      break;
+    default:
+      eglGetError();
+      break;
     }
     break;
   case 20: {

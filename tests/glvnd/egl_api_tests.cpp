@@ -121,9 +121,9 @@ TEST(EglDisplay, Errors) {
   EXPECT_FALSE(eglInitialize(bogus, &major, &minor));
   EXPECT_EQ(eglGetError(), EGL_BAD_DISPLAY);
   EXPECT_EQ(eglGetError(), EGL_SUCCESS); // reading the error resets it
-  EXPECT_EQ(eglGetPlatformDisplay(EGL_PLATFORM_SURFACELESS_MESA, reinterpret_cast<void*>(1),
-                                  nullptr),
-            EGL_NO_DISPLAY);
+  EXPECT_EQ(
+      eglGetPlatformDisplay(EGL_PLATFORM_SURFACELESS_MESA, reinterpret_cast<void*>(1), nullptr),
+      EGL_NO_DISPLAY);
   EXPECT_NE(eglGetError(), EGL_SUCCESS);
   EGLDisplay d = eglGetPlatformDisplay(EGL_PLATFORM_SURFACELESS_MESA, EGL_DEFAULT_DISPLAY, nullptr);
   ASSERT_NE(d, EGL_NO_DISPLAY);
@@ -206,11 +206,16 @@ TEST_F(Surfaceless, ChooseConfigErrors) {
 void expect_sorted(EGLDisplay d, const std::vector<EGLConfig>& list, bool count_alpha) {
   auto key = [&](EGLConfig c) {
     const long long color = 3 * 8 + (count_alpha ? attrib(d, c, EGL_ALPHA_SIZE) : 0);
-    return std::vector<long long>{
-        attrib(d, c, EGL_CONFIG_CAVEAT) == EGL_NONE ? 0 : 1, 0, -color,
-        attrib(d, c, EGL_BUFFER_SIZE), attrib(d, c, EGL_SAMPLE_BUFFERS), attrib(d, c, EGL_SAMPLES),
-        attrib(d, c, EGL_DEPTH_SIZE), attrib(d, c, EGL_STENCIL_SIZE),
-        attrib(d, c, EGL_ALPHA_MASK_SIZE), attrib(d, c, EGL_CONFIG_ID)};
+    return std::vector<long long>{attrib(d, c, EGL_CONFIG_CAVEAT) == EGL_NONE ? 0 : 1,
+                                  0,
+                                  -color,
+                                  attrib(d, c, EGL_BUFFER_SIZE),
+                                  attrib(d, c, EGL_SAMPLE_BUFFERS),
+                                  attrib(d, c, EGL_SAMPLES),
+                                  attrib(d, c, EGL_DEPTH_SIZE),
+                                  attrib(d, c, EGL_STENCIL_SIZE),
+                                  attrib(d, c, EGL_ALPHA_MASK_SIZE),
+                                  attrib(d, c, EGL_CONFIG_ID)};
   };
   for (size_t i = 1; i < list.size(); ++i)
     EXPECT_LT(key(list[i - 1]), key(list[i])) << "configs " << i - 1 << " and " << i;
@@ -228,8 +233,15 @@ TEST_F(Surfaceless, ChooseConfigSelectsAndSorts) {
   EXPECT_EQ(attrib(dpy, all.front(), EGL_DEPTH_SIZE), 0);
   EXPECT_EQ(attrib(dpy, all.front(), EGL_STENCIL_SIZE), 0);
   // Asking for alpha counts it among the colour bits: the larger totals sort first.
-  const EGLint alpha[] = {EGL_SURFACE_TYPE, EGL_PBUFFER_BIT, EGL_RENDERABLE_TYPE, EGL_OPENGL_BIT,
-                          EGL_ALPHA_SIZE, 1, EGL_DEPTH_SIZE, 1, EGL_NONE};
+  const EGLint alpha[] = {EGL_SURFACE_TYPE,
+                          EGL_PBUFFER_BIT,
+                          EGL_RENDERABLE_TYPE,
+                          EGL_OPENGL_BIT,
+                          EGL_ALPHA_SIZE,
+                          1,
+                          EGL_DEPTH_SIZE,
+                          1,
+                          EGL_NONE};
   const auto with_alpha = choose(dpy, alpha);
   ASSERT_FALSE(with_alpha.empty());
   expect_sorted(dpy, with_alpha, true);
@@ -239,16 +251,25 @@ TEST_F(Surfaceless, ChooseConfigSelectsAndSorts) {
   }
   EXPECT_EQ(attrib(dpy, with_alpha.front(), EGL_DEPTH_SIZE), 16);
   // At-least sizes, exact caveat.
-  const EGLint deep[] = {EGL_SURFACE_TYPE, EGL_PBUFFER_BIT, EGL_RENDERABLE_TYPE, EGL_OPENGL_BIT,
-                         EGL_DEPTH_SIZE, 24, EGL_STENCIL_SIZE, 8, EGL_CONFIG_CAVEAT, EGL_NONE,
+  const EGLint deep[] = {EGL_SURFACE_TYPE,
+                         EGL_PBUFFER_BIT,
+                         EGL_RENDERABLE_TYPE,
+                         EGL_OPENGL_BIT,
+                         EGL_DEPTH_SIZE,
+                         24,
+                         EGL_STENCIL_SIZE,
+                         8,
+                         EGL_CONFIG_CAVEAT,
+                         EGL_NONE,
                          EGL_NONE};
   for (EGLConfig c : choose(dpy, deep)) {
     EXPECT_GE(attrib(dpy, c, EGL_DEPTH_SIZE), 24);
     EXPECT_EQ(attrib(dpy, c, EGL_STENCIL_SIZE), 8);
   }
   // Multisampled configs do not exist yet.
-  const EGLint samples[] = {EGL_SURFACE_TYPE, EGL_PBUFFER_BIT, EGL_RENDERABLE_TYPE,
-                            EGL_OPENGL_BIT, EGL_SAMPLE_BUFFERS, 1, EGL_NONE};
+  const EGLint samples[] = {EGL_SURFACE_TYPE, EGL_PBUFFER_BIT,    EGL_RENDERABLE_TYPE,
+                            EGL_OPENGL_BIT,   EGL_SAMPLE_BUFFERS, 1,
+                            EGL_NONE};
   EXPECT_TRUE(choose(dpy, samples).empty());
   // EGL_CONFIG_ID selects one config and every other attribute is ignored.
   const EGLint id = attrib(dpy, all[2], EGL_CONFIG_ID);
@@ -258,7 +279,8 @@ TEST_F(Surfaceless, ChooseConfigSelectsAndSorts) {
   EXPECT_EQ(one[0], all[2]);
   // Only the colour components asked for count: DONT_CARE does not.
   const EGLint dont_care[] = {EGL_SURFACE_TYPE, EGL_PBUFFER_BIT, EGL_RENDERABLE_TYPE,
-                              EGL_OPENGL_BIT, EGL_ALPHA_SIZE, EGL_DONT_CARE, EGL_NONE};
+                              EGL_OPENGL_BIT,   EGL_ALPHA_SIZE,  EGL_DONT_CARE,
+                              EGL_NONE};
   EXPECT_EQ(attrib(dpy, choose(dpy, dont_care).front(), EGL_ALPHA_SIZE), 0);
 }
 
@@ -291,8 +313,8 @@ TEST_F(Surfaceless, PbufferSurface) {
   const EGLint negative[] = {EGL_WIDTH, -1, EGL_NONE};
   EXPECT_EQ(eglCreatePbufferSurface(dpy, config, negative), EGL_NO_SURFACE);
   EXPECT_EQ(eglGetError(), EGL_BAD_PARAMETER);
-  const EGLint texture[] = {EGL_TEXTURE_FORMAT, EGL_TEXTURE_RGB, EGL_TEXTURE_TARGET,
-                            EGL_TEXTURE_2D, EGL_NONE};
+  const EGLint texture[] = {EGL_TEXTURE_FORMAT, EGL_TEXTURE_RGB, EGL_TEXTURE_TARGET, EGL_TEXTURE_2D,
+                            EGL_NONE};
   EXPECT_EQ(eglCreatePbufferSurface(dpy, config, texture), EGL_NO_SURFACE);
   EXPECT_EQ(eglGetError(), EGL_BAD_MATCH);
   const EGLint unknown[] = {0x1234, 1, EGL_NONE};
@@ -303,7 +325,8 @@ TEST_F(Surfaceless, PbufferSurface) {
   EXPECT_EQ(eglGetError(), EGL_BAD_MATCH);
   EXPECT_EQ(eglCreatePbufferSurface(dpy, reinterpret_cast<EGLConfig>(&v), nullptr), EGL_NO_SURFACE);
   EXPECT_EQ(eglGetError(), EGL_BAD_CONFIG);
-  const EGLint huge[] = {EGL_WIDTH, 1 << 20, EGL_HEIGHT, 4, EGL_LARGEST_PBUFFER, EGL_TRUE, EGL_NONE};
+  const EGLint huge[] = {EGL_WIDTH,           1 << 20,  EGL_HEIGHT, 4,
+                         EGL_LARGEST_PBUFFER, EGL_TRUE, EGL_NONE};
   EGLSurface largest = eglCreatePbufferSurface(dpy, config, huge);
   ASSERT_NE(largest, EGL_NO_SURFACE);
   EXPECT_TRUE(eglQuerySurface(dpy, largest, EGL_WIDTH, &v));
@@ -332,9 +355,9 @@ TEST_F(Surfaceless, ContextsAndVersions) {
   // The version the context reports is the most that can be asked for.
   ASSERT_TRUE(eglMakeCurrent(dpy, EGL_NO_SURFACE, EGL_NO_SURFACE, c));
   int major = 0, minor = 0;
-  ASSERT_EQ(std::sscanf(reinterpret_cast<const char*>(glGetString(GL_VERSION)), "%d.%d", &major,
-                        &minor),
-            2);
+  ASSERT_EQ(
+      std::sscanf(reinterpret_cast<const char*>(glGetString(GL_VERSION)), "%d.%d", &major, &minor),
+      2);
   for (int m = 0; m <= minor; ++m) {
     const EGLint a[] = {EGL_CONTEXT_MAJOR_VERSION, major, EGL_CONTEXT_MINOR_VERSION, m, EGL_NONE};
     EGLContext ok = eglCreateContext(dpy, config, EGL_NO_CONTEXT, a);
@@ -346,9 +369,13 @@ TEST_F(Surfaceless, ContextsAndVersions) {
   // 1.6 does not exist and 2.2 neither: both are a mismatch.
   EXPECT_EQ(eglCreateContext(dpy, config, EGL_NO_CONTEXT, above), EGL_NO_CONTEXT);
   EXPECT_EQ(eglGetError(), EGL_BAD_MATCH);
-  const EGLint gl45[] = {EGL_CONTEXT_MAJOR_VERSION, 4, EGL_CONTEXT_MINOR_VERSION, 5,
+  const EGLint gl45[] = {EGL_CONTEXT_MAJOR_VERSION,
+                         4,
+                         EGL_CONTEXT_MINOR_VERSION,
+                         5,
                          EGL_CONTEXT_OPENGL_PROFILE_MASK,
-                         EGL_CONTEXT_OPENGL_COMPATIBILITY_PROFILE_BIT, EGL_NONE};
+                         EGL_CONTEXT_OPENGL_COMPATIBILITY_PROFILE_BIT,
+                         EGL_NONE};
   EXPECT_EQ(eglCreateContext(dpy, config, EGL_NO_CONTEXT, gl45), EGL_NO_CONTEXT);
   EXPECT_EQ(eglGetError(), EGL_BAD_MATCH);
   const EGLint robust[] = {EGL_CONTEXT_OPENGL_ROBUST_ACCESS, EGL_TRUE, EGL_NONE};
@@ -546,9 +573,9 @@ TEST_F(Surfaceless, SyncsAndImages) {
   EXPECT_FALSE(eglDestroySync(dpy, sync));
   EXPECT_EQ(eglGetError(), EGL_BAD_PARAMETER);
   // No client buffer can be an EGLImage yet.
-  EXPECT_EQ(eglCreateImage(dpy, c, EGL_GL_TEXTURE_2D, reinterpret_cast<EGLClientBuffer>(1),
-                           nullptr),
-            EGL_NO_IMAGE);
+  EXPECT_EQ(
+      eglCreateImage(dpy, c, EGL_GL_TEXTURE_2D, reinterpret_cast<EGLClientBuffer>(1), nullptr),
+      EGL_NO_IMAGE);
   EXPECT_EQ(eglGetError(), EGL_BAD_PARAMETER);
   eglMakeCurrent(dpy, EGL_NO_SURFACE, EGL_NO_SURFACE, EGL_NO_CONTEXT);
   eglDestroyContext(dpy, c);
@@ -648,8 +675,13 @@ TEST_F(X11, DisplayAndConfigs) {
   }
   // EGL_MATCH_NATIVE_PIXMAP: the configs of the pixmap's depth.
   Pixmap pm = XCreatePixmap(x, DefaultRootWindow(x), 8, 8, 24);
-  const EGLint match[] = {EGL_MATCH_NATIVE_PIXMAP, static_cast<EGLint>(pm), EGL_RENDERABLE_TYPE,
-                          EGL_OPENGL_BIT, EGL_SURFACE_TYPE, EGL_PIXMAP_BIT, EGL_NONE};
+  const EGLint match[] = {EGL_MATCH_NATIVE_PIXMAP,
+                          static_cast<EGLint>(pm),
+                          EGL_RENDERABLE_TYPE,
+                          EGL_OPENGL_BIT,
+                          EGL_SURFACE_TYPE,
+                          EGL_PIXMAP_BIT,
+                          EGL_NONE};
   const auto for_pixmap = choose(dpy, match);
   EXPECT_FALSE(for_pixmap.empty());
   for (EGLConfig c : for_pixmap)
@@ -663,7 +695,8 @@ TEST_F(X11, DisplayAndConfigs) {
 
 TEST_F(X11, WindowSurface) {
   Window win = window(config, 64, 48);
-  EGLSurface s = eglCreateWindowSurface(dpy, config, static_cast<EGLNativeWindowType>(win), nullptr);
+  EGLSurface s =
+      eglCreateWindowSurface(dpy, config, static_cast<EGLNativeWindowType>(win), nullptr);
   ASSERT_NE(s, EGL_NO_SURFACE);
   // One surface per window.
   EXPECT_EQ(eglCreateWindowSurface(dpy, config, static_cast<EGLNativeWindowType>(win), nullptr),
@@ -724,7 +757,8 @@ TEST_F(X11, WindowSurface) {
   // A single-buffered window shows what was rendered at glFlush.
   Window w4 = window(config, 16, 16);
   const EGLint single[] = {EGL_RENDER_BUFFER, EGL_SINGLE_BUFFER, EGL_NONE};
-  EGLSurface one = eglCreateWindowSurface(dpy, config, static_cast<EGLNativeWindowType>(w4), single);
+  EGLSurface one =
+      eglCreateWindowSurface(dpy, config, static_cast<EGLNativeWindowType>(w4), single);
   ASSERT_NE(one, EGL_NO_SURFACE);
   ASSERT_TRUE(eglMakeCurrent(dpy, one, one, ctx));
   glViewport(0, 0, 16, 16);
@@ -792,7 +826,8 @@ TEST_F(X11, CloseDisplayWhileCurrent) {
   // The application closes its X connection with a context current on a window surface: the
   // display is terminated with it, GL renders nowhere, and nothing crashes.
   Window win = window(config, 32, 32);
-  EGLSurface s = eglCreateWindowSurface(dpy, config, static_cast<EGLNativeWindowType>(win), nullptr);
+  EGLSurface s =
+      eglCreateWindowSurface(dpy, config, static_cast<EGLNativeWindowType>(win), nullptr);
   ASSERT_NE(s, EGL_NO_SURFACE);
   ASSERT_TRUE(eglMakeCurrent(dpy, s, s, ctx));
   glClear(GL_COLOR_BUFFER_BIT);

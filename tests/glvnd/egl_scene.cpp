@@ -68,7 +68,8 @@ void draw() {
   glPushMatrix();
   glTranslatef(0.9f, -0.3f, 0.8f);
   for (int i = 0; i < 8; ++i) {
-    const float a0 = static_cast<float>(i) / 8 * 3.14159265f, a1 = static_cast<float>(i + 1) / 8 * 3.14159265f;
+    const float a0 = static_cast<float>(i) / 8 * 3.14159265f,
+                a1 = static_cast<float>(i + 1) / 8 * 3.14159265f;
     glBegin(GL_QUAD_STRIP);
     for (int j = 0; j <= 16; ++j) {
       const float b = static_cast<float>(j) / 16 * 6.2831853f;
@@ -140,8 +141,9 @@ int main(int argc, char** argv) {
   const EGLint type = kind == "window"   ? EGL_WINDOW_BIT
                       : kind == "pixmap" ? EGL_PIXMAP_BIT
                                          : EGL_PBUFFER_BIT;
-  const EGLint want[] = {EGL_SURFACE_TYPE, type, EGL_RENDERABLE_TYPE, EGL_OPENGL_BIT,
-                         EGL_RED_SIZE, 8, EGL_DEPTH_SIZE, 24, EGL_NONE};
+  const EGLint want[] = {EGL_SURFACE_TYPE, type,         EGL_RENDERABLE_TYPE,
+                         EGL_OPENGL_BIT,   EGL_RED_SIZE, 8,
+                         EGL_DEPTH_SIZE,   24,           EGL_NONE};
   EGLConfig config = nullptr;
   EGLint n = 0;
   if (!eglChooseConfig(dpy, want, &config, 1, &n) || n < 1) return die("eglChooseConfig");
@@ -171,8 +173,8 @@ int main(int argc, char** argv) {
       drawable = win;
       surface = eglCreatePlatformWindowSurface(dpy, config, &win, nullptr);
     } else {
-      Pixmap pm = XCreatePixmap(x, DefaultRootWindow(x), kWidth, kHeight,
-                                static_cast<unsigned>(vi->depth));
+      Pixmap pm =
+          XCreatePixmap(x, DefaultRootWindow(x), kWidth, kHeight, static_cast<unsigned>(vi->depth));
       drawable = pm;
       surface = eglCreatePlatformPixmapSurface(dpy, config, &pm, nullptr);
     }

@@ -46,7 +46,8 @@ int main() {
   check(create != nullptr, "glXGetProcAddress(glXCreateContextAttribsARB)");
   const int ctx_attribs[] = {GLX_CONTEXT_MAJOR_VERSION_ARB, 1, GLX_CONTEXT_MINOR_VERSION_ARB, 3,
                              None};
-  GLXContext ctx = create != nullptr ? create(dpy, configs[0], nullptr, True, ctx_attribs) : nullptr;
+  GLXContext ctx =
+      create != nullptr ? create(dpy, configs[0], nullptr, True, ctx_attribs) : nullptr;
   check(ctx != nullptr, "glXCreateContextAttribsARB(1.3)");
   check(ctx != nullptr && glXMakeContextCurrent(dpy, glxwin, glxwin, ctx), "glXMakeContextCurrent");
   const char* renderer = reinterpret_cast<const char*>(glGetString(GL_RENDERER));

@@ -97,7 +97,9 @@ int criterion_index(EGLint attribute) {
 
 struct Request {
   std::array<EGLint, kCriteriaCount> value{};
-  EGLint get(EGLint attribute) const { return value[static_cast<size_t>(criterion_index(attribute))]; }
+  EGLint get(EGLint attribute) const {
+    return value[static_cast<size_t>(criterion_index(attribute))];
+  }
 };
 
 // The value a config has for an attribute of Table 3.4.
@@ -129,8 +131,8 @@ bool matches(const EglConfig& c, const Request& r, int pixmap_depth) {
     }
   }
   // EGL_MATCH_NATIVE_PIXMAP: configs that can render to that pixmap.
-  if (pixmap_depth >= 0 &&
-      ((c.surface_type & EGL_PIXMAP_BIT) == 0 || c.x.visual == nullptr || c.x.depth != pixmap_depth))
+  if (pixmap_depth >= 0 && ((c.surface_type & EGL_PIXMAP_BIT) == 0 || c.x.visual == nullptr ||
+                            c.x.depth != pixmap_depth))
     return false;
   return true;
 }
@@ -146,14 +148,10 @@ std::array<long long, 10> sort_key(const EglConfig& c, const Request& r) {
   }
   auto caveat_rank = [](EGLint v) { return v == EGL_NONE ? 0 : v == EGL_SLOW_CONFIG ? 1 : 2; };
   return {caveat_rank(attrib_or_zero(c, EGL_CONFIG_CAVEAT)),
-          attrib_or_zero(c, EGL_COLOR_BUFFER_TYPE) == EGL_RGB_BUFFER ? 0 : 1,
-          -color,
-          attrib_or_zero(c, EGL_BUFFER_SIZE),
-          attrib_or_zero(c, EGL_SAMPLE_BUFFERS),
-          attrib_or_zero(c, EGL_SAMPLES),
-          attrib_or_zero(c, EGL_DEPTH_SIZE),
-          attrib_or_zero(c, EGL_STENCIL_SIZE),
-          attrib_or_zero(c, EGL_ALPHA_MASK_SIZE),
+          attrib_or_zero(c, EGL_COLOR_BUFFER_TYPE) == EGL_RGB_BUFFER ? 0 : 1, -color,
+          attrib_or_zero(c, EGL_BUFFER_SIZE), attrib_or_zero(c, EGL_SAMPLE_BUFFERS),
+          attrib_or_zero(c, EGL_SAMPLES), attrib_or_zero(c, EGL_DEPTH_SIZE),
+          attrib_or_zero(c, EGL_STENCIL_SIZE), attrib_or_zero(c, EGL_ALPHA_MASK_SIZE),
           // EGL_NATIVE_VISUAL_TYPE's order is implementation-defined: it is left out, and
           // EGL_CONFIG_ID makes the order total.
           c.id};
@@ -251,39 +249,88 @@ const EglConfig* find_config(EglDisplay* d, EGLConfig handle) {
 bool config_attrib(const EglConfig& c, EGLint attribute, EGLint* value) {
   EGLint v = 0;
   switch (attribute) {
-  case EGL_BUFFER_SIZE: v = 24 + c.alpha; break;
+  case EGL_BUFFER_SIZE:
+    v = 24 + c.alpha;
+    break;
   case EGL_RED_SIZE:
   case EGL_GREEN_SIZE:
-  case EGL_BLUE_SIZE: v = 8; break;
-  case EGL_ALPHA_SIZE: v = c.alpha; break;
+  case EGL_BLUE_SIZE:
+    v = 8;
+    break;
+  case EGL_ALPHA_SIZE:
+    v = c.alpha;
+    break;
   case EGL_LUMINANCE_SIZE:
-  case EGL_ALPHA_MASK_SIZE: v = 0; break;
+  case EGL_ALPHA_MASK_SIZE:
+    v = 0;
+    break;
   case EGL_BIND_TO_TEXTURE_RGB:
-  case EGL_BIND_TO_TEXTURE_RGBA: v = EGL_FALSE; break;
-  case EGL_COLOR_BUFFER_TYPE: v = EGL_RGB_BUFFER; break;
-  case EGL_CONFIG_CAVEAT: v = EGL_NONE; break;
-  case EGL_CONFIG_ID: v = c.id; break;
+  case EGL_BIND_TO_TEXTURE_RGBA:
+    v = EGL_FALSE;
+    break;
+  case EGL_COLOR_BUFFER_TYPE:
+    v = EGL_RGB_BUFFER;
+    break;
+  case EGL_CONFIG_CAVEAT:
+    v = EGL_NONE;
+    break;
+  case EGL_CONFIG_ID:
+    v = c.id;
+    break;
   case EGL_CONFORMANT:
-  case EGL_RENDERABLE_TYPE: v = EGL_OPENGL_BIT; break;
-  case EGL_DEPTH_SIZE: v = c.depth; break;
-  case EGL_STENCIL_SIZE: v = c.stencil; break;
-  case EGL_LEVEL: v = 0; break;
+  case EGL_RENDERABLE_TYPE:
+    v = EGL_OPENGL_BIT;
+    break;
+  case EGL_DEPTH_SIZE:
+    v = c.depth;
+    break;
+  case EGL_STENCIL_SIZE:
+    v = c.stencil;
+    break;
+  case EGL_LEVEL:
+    v = 0;
+    break;
   case EGL_MAX_PBUFFER_WIDTH:
-  case EGL_MAX_PBUFFER_HEIGHT: v = kMaxPbufferDim; break;
-  case EGL_MAX_PBUFFER_PIXELS: v = kMaxPbufferDim * kMaxPbufferDim; break;
-  case EGL_MAX_SWAP_INTERVAL: v = kMaxSwapInterval; break;
-  case EGL_MIN_SWAP_INTERVAL: v = 0; break;
-  case EGL_NATIVE_RENDERABLE: v = c.native_renderable ? EGL_TRUE : EGL_FALSE; break;
-  case EGL_NATIVE_VISUAL_ID: v = c.native_visual_id; break;
-  case EGL_NATIVE_VISUAL_TYPE: v = c.native_visual_type; break;
-  case EGL_SAMPLE_BUFFERS: v = c.sample_buffers; break;
-  case EGL_SAMPLES: v = c.samples; break;
-  case EGL_SURFACE_TYPE: v = c.surface_type; break;
-  case EGL_TRANSPARENT_TYPE: v = EGL_NONE; break;
+  case EGL_MAX_PBUFFER_HEIGHT:
+    v = kMaxPbufferDim;
+    break;
+  case EGL_MAX_PBUFFER_PIXELS:
+    v = kMaxPbufferDim * kMaxPbufferDim;
+    break;
+  case EGL_MAX_SWAP_INTERVAL:
+    v = kMaxSwapInterval;
+    break;
+  case EGL_MIN_SWAP_INTERVAL:
+    v = 0;
+    break;
+  case EGL_NATIVE_RENDERABLE:
+    v = c.native_renderable ? EGL_TRUE : EGL_FALSE;
+    break;
+  case EGL_NATIVE_VISUAL_ID:
+    v = c.native_visual_id;
+    break;
+  case EGL_NATIVE_VISUAL_TYPE:
+    v = c.native_visual_type;
+    break;
+  case EGL_SAMPLE_BUFFERS:
+    v = c.sample_buffers;
+    break;
+  case EGL_SAMPLES:
+    v = c.samples;
+    break;
+  case EGL_SURFACE_TYPE:
+    v = c.surface_type;
+    break;
+  case EGL_TRANSPARENT_TYPE:
+    v = EGL_NONE;
+    break;
   case EGL_TRANSPARENT_RED_VALUE:
   case EGL_TRANSPARENT_GREEN_VALUE:
-  case EGL_TRANSPARENT_BLUE_VALUE: v = 0; break;
-  default: return false;
+  case EGL_TRANSPARENT_BLUE_VALUE:
+    v = 0;
+    break;
+  default:
+    return false;
   }
   *value = v;
   return true;

@@ -37,11 +37,16 @@ int supported_gl_version() {
 
 bool version_defined(int major, int minor) {
   switch (major) {
-  case 1: return minor >= 0 && minor <= 5;
-  case 2: return minor >= 0 && minor <= 1;
-  case 3: return minor >= 0 && minor <= 3;
-  case 4: return minor >= 0 && minor <= 6;
-  default: return false;
+  case 1:
+    return minor >= 0 && minor <= 5;
+  case 2:
+    return minor >= 0 && minor <= 1;
+  case 3:
+    return minor >= 0 && minor <= 3;
+  case 4:
+    return minor >= 0 && minor <= 6;
+  default:
+    return false;
   }
 }
 
@@ -146,10 +151,18 @@ EGL_EXPORT EGLContext EGLAPIENTRY eglCreateContext(EGLDisplay dpy, EGLConfig con
   for (int i = 0; attrib_list != nullptr && attrib_list[i] != EGL_NONE; i += 2) {
     const EGLint v = attrib_list[i + 1];
     switch (attrib_list[i]) {
-    case EGL_CONTEXT_MAJOR_VERSION: major = v; break;
-    case EGL_CONTEXT_MINOR_VERSION: minor = v; break;
-    case EGL_CONTEXT_FLAGS_KHR: flags = v; break;
-    case EGL_CONTEXT_OPENGL_PROFILE_MASK: profile = v; break;
+    case EGL_CONTEXT_MAJOR_VERSION:
+      major = v;
+      break;
+    case EGL_CONTEXT_MINOR_VERSION:
+      minor = v;
+      break;
+    case EGL_CONTEXT_FLAGS_KHR:
+      flags = v;
+      break;
+    case EGL_CONTEXT_OPENGL_PROFILE_MASK:
+      profile = v;
+      break;
     case EGL_CONTEXT_OPENGL_DEBUG:
       if (v != EGL_TRUE && v != EGL_FALSE) return fail(EGL_BAD_ATTRIBUTE, fn, EGL_NO_CONTEXT);
       if (v == EGL_TRUE) flags |= EGL_CONTEXT_OPENGL_DEBUG_BIT_KHR;
@@ -236,7 +249,8 @@ EGL_EXPORT EGLBoolean EGLAPIENTRY eglMakeCurrent(EGLDisplay dpy, EGLSurface draw
   EglContext* c = find_context(d, ctx);
   if (c == nullptr) return fail(EGL_BAD_CONTEXT, fn, EGL_FALSE);
   // One surface without the other is a mismatch; neither is EGL_KHR_surfaceless_context.
-  if ((draw == EGL_NO_SURFACE) != (read == EGL_NO_SURFACE)) return fail(EGL_BAD_MATCH, fn, EGL_FALSE);
+  if ((draw == EGL_NO_SURFACE) != (read == EGL_NO_SURFACE))
+    return fail(EGL_BAD_MATCH, fn, EGL_FALSE);
   EglSurface* s = nullptr;
   if (draw != EGL_NO_SURFACE) {
     s = find_surface(d, draw);
@@ -315,9 +329,15 @@ EGL_EXPORT EGLBoolean EGLAPIENTRY eglQueryContext(EGLDisplay dpy, EGLContext ctx
   if (c == nullptr) return fail(EGL_BAD_CONTEXT, fn, EGL_FALSE);
   EGLint v = 0;
   switch (attribute) {
-  case EGL_CONFIG_ID: v = c->config->id; break;
-  case EGL_CONTEXT_CLIENT_TYPE: v = EGL_OPENGL_API; break;
-  case EGL_CONTEXT_CLIENT_VERSION: v = c->major; break;
+  case EGL_CONFIG_ID:
+    v = c->config->id;
+    break;
+  case EGL_CONTEXT_CLIENT_TYPE:
+    v = EGL_OPENGL_API;
+    break;
+  case EGL_CONTEXT_CLIENT_VERSION:
+    v = c->major;
+    break;
   case EGL_RENDER_BUFFER:
     // §3.7.4: the buffer the context renders to on its draw surface; EGL_NONE without one.
     if (c->draw == nullptr)
@@ -327,7 +347,8 @@ EGL_EXPORT EGLBoolean EGLAPIENTRY eglQueryContext(EGLDisplay dpy, EGLContext ctx
     else
       v = has_back_buffer(*c->draw) ? EGL_BACK_BUFFER : EGL_SINGLE_BUFFER;
     break;
-  default: return fail(EGL_BAD_ATTRIBUTE, fn, EGL_FALSE);
+  default:
+    return fail(EGL_BAD_ATTRIBUTE, fn, EGL_FALSE);
   }
   if (value == nullptr) return fail(EGL_BAD_PARAMETER, fn, EGL_FALSE);
   *value = v;
@@ -452,10 +473,17 @@ EGL_EXPORT EGLBoolean EGLAPIENTRY eglGetSyncAttrib(EGLDisplay dpy, EGLSync sync,
   if (s == nullptr) return fail(EGL_BAD_PARAMETER, fn, EGL_FALSE);
   EGLAttrib v = 0;
   switch (attribute) {
-  case EGL_SYNC_TYPE: v = s->type; break;
-  case EGL_SYNC_STATUS: v = EGL_SIGNALED; break;
-  case EGL_SYNC_CONDITION: v = EGL_SYNC_PRIOR_COMMANDS_COMPLETE; break;
-  default: return fail(EGL_BAD_ATTRIBUTE, fn, EGL_FALSE);
+  case EGL_SYNC_TYPE:
+    v = s->type;
+    break;
+  case EGL_SYNC_STATUS:
+    v = EGL_SIGNALED;
+    break;
+  case EGL_SYNC_CONDITION:
+    v = EGL_SYNC_PRIOR_COMMANDS_COMPLETE;
+    break;
+  default:
+    return fail(EGL_BAD_ATTRIBUTE, fn, EGL_FALSE);
   }
   if (value == nullptr) return fail(EGL_BAD_PARAMETER, fn, EGL_FALSE);
   *value = v;

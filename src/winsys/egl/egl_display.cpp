@@ -240,11 +240,20 @@ EGL_EXPORT const char* EGLAPIENTRY eglQueryString(EGLDisplay dpy, EGLint name) {
   if (d == nullptr) return nullptr;
   const char* s = nullptr;
   switch (name) {
-  case EGL_CLIENT_APIS: s = kClientApis; break;
-  case EGL_EXTENSIONS: s = kDisplayExtensions; break;
-  case EGL_VENDOR: s = kVendor; break;
-  case EGL_VERSION: s = kVersion; break;
-  default: return fail(EGL_BAD_PARAMETER, "eglQueryString", static_cast<const char*>(nullptr));
+  case EGL_CLIENT_APIS:
+    s = kClientApis;
+    break;
+  case EGL_EXTENSIONS:
+    s = kDisplayExtensions;
+    break;
+  case EGL_VENDOR:
+    s = kVendor;
+    break;
+  case EGL_VERSION:
+    s = kVersion;
+    break;
+  default:
+    return fail(EGL_BAD_PARAMETER, "eglQueryString", static_cast<const char*>(nullptr));
   }
   succeed();
   return s;

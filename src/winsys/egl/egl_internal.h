@@ -84,7 +84,7 @@ struct EglSurface : x11::Target {
   int swap_interval = 1;
   std::chrono::steady_clock::time_point last_swap{};
   std::vector<struct EglContext*> bound; // contexts current on it (draw surface)
-  bool destroy_pending = false; // eglDestroySurface while current: freed on release
+  bool destroy_pending = false;          // eglDestroySurface while current: freed on release
 };
 
 // An EGLContext: the GL state plus EGL bookkeeping (§3.7).
@@ -119,7 +119,9 @@ template <typename T> T fail(EGLint error, const char* function, T result) {
   return result;
 }
 // The call succeeded.
-inline void succeed() { set_error(EGL_SUCCESS, nullptr); }
+inline void succeed() {
+  set_error(EGL_SUCCESS, nullptr);
+}
 
 // ---- displays (egl_display.cpp) ----
 // The display behind a handle, or nullptr (EGL_BAD_DISPLAY is set).

@@ -277,9 +277,15 @@ EGL_EXPORT EGLSurface EGLAPIENTRY eglCreatePbufferSurface(EGLDisplay dpy, EGLCon
   for (int i = 0; attrib_list != nullptr && attrib_list[i] != EGL_NONE; i += 2) {
     const EGLint v = attrib_list[i + 1];
     switch (attrib_list[i]) {
-    case EGL_WIDTH: w = v; break;
-    case EGL_HEIGHT: h = v; break;
-    case EGL_LARGEST_PBUFFER: largest = v != EGL_FALSE ? EGL_TRUE : EGL_FALSE; break;
+    case EGL_WIDTH:
+      w = v;
+      break;
+    case EGL_HEIGHT:
+      h = v;
+      break;
+    case EGL_LARGEST_PBUFFER:
+      largest = v != EGL_FALSE ? EGL_TRUE : EGL_FALSE;
+      break;
     case EGL_TEXTURE_FORMAT:
       if (v != EGL_NO_TEXTURE && v != EGL_TEXTURE_RGB && v != EGL_TEXTURE_RGBA)
         return fail(EGL_BAD_ATTRIBUTE, fn, EGL_NO_SURFACE);
@@ -290,7 +296,9 @@ EGL_EXPORT EGLSurface EGLAPIENTRY eglCreatePbufferSurface(EGLDisplay dpy, EGLCon
         return fail(EGL_BAD_ATTRIBUTE, fn, EGL_NO_SURFACE);
       tex_target = v;
       break;
-    case EGL_MIPMAP_TEXTURE: mipmap = v != EGL_FALSE ? EGL_TRUE : EGL_FALSE; break;
+    case EGL_MIPMAP_TEXTURE:
+      mipmap = v != EGL_FALSE ? EGL_TRUE : EGL_FALSE;
+      break;
     default: {
       const EGLint e = common_attribute(attrib_list[i], v);
       if (e != EGL_SUCCESS) return fail(e, fn, EGL_NO_SURFACE);
@@ -360,8 +368,12 @@ EGL_EXPORT EGLBoolean EGLAPIENTRY eglQuerySurface(EGLDisplay dpy, EGLSurface sur
   if (s == nullptr) return fail(EGL_BAD_SURFACE, fn, EGL_FALSE);
   EGLint v = 0;
   switch (attribute) {
-  case EGL_CONFIG_ID: v = s->config->id; break;
-  case EGL_GL_COLORSPACE: v = EGL_GL_COLORSPACE_LINEAR; break;
+  case EGL_CONFIG_ID:
+    v = s->config->id;
+    break;
+  case EGL_GL_COLORSPACE:
+    v = EGL_GL_COLORSPACE_LINEAR;
+    break;
   case EGL_WIDTH:
   case EGL_HEIGHT:
     // A window's size is the server's, which may have changed.
@@ -370,7 +382,9 @@ EGL_EXPORT EGLBoolean EGLAPIENTRY eglQuerySurface(EGLDisplay dpy, EGLSurface sur
     break;
   case EGL_HORIZONTAL_RESOLUTION:
   case EGL_VERTICAL_RESOLUTION:
-  case EGL_PIXEL_ASPECT_RATIO: v = EGL_UNKNOWN; break;
+  case EGL_PIXEL_ASPECT_RATIO:
+    v = EGL_UNKNOWN;
+    break;
   case EGL_LARGEST_PBUFFER:
     // §3.5.6: only for pbuffers; other surfaces leave value unchanged.
     if (s->type != EGL_PBUFFER_BIT) {
@@ -379,16 +393,35 @@ EGL_EXPORT EGLBoolean EGLAPIENTRY eglQuerySurface(EGLDisplay dpy, EGLSurface sur
     }
     v = s->largest;
     break;
-  case EGL_MIPMAP_TEXTURE: v = s->mipmap_texture; break;
-  case EGL_MIPMAP_LEVEL: v = s->mipmap_level; break;
-  case EGL_MULTISAMPLE_RESOLVE: v = s->multisample_resolve; break;
-  case EGL_RENDER_BUFFER: v = s->type == EGL_PIXMAP_BIT ? EGL_SINGLE_BUFFER : s->render_buffer; break;
-  case EGL_SWAP_BEHAVIOR: v = s->swap_behavior; break;
-  case EGL_TEXTURE_FORMAT: v = s->texture_format; break;
-  case EGL_TEXTURE_TARGET: v = s->texture_target; break;
-  case EGL_VG_ALPHA_FORMAT: v = EGL_VG_ALPHA_FORMAT_NONPRE; break;
-  case EGL_VG_COLORSPACE: v = EGL_VG_COLORSPACE_sRGB; break;
-  default: return fail(EGL_BAD_ATTRIBUTE, fn, EGL_FALSE);
+  case EGL_MIPMAP_TEXTURE:
+    v = s->mipmap_texture;
+    break;
+  case EGL_MIPMAP_LEVEL:
+    v = s->mipmap_level;
+    break;
+  case EGL_MULTISAMPLE_RESOLVE:
+    v = s->multisample_resolve;
+    break;
+  case EGL_RENDER_BUFFER:
+    v = s->type == EGL_PIXMAP_BIT ? EGL_SINGLE_BUFFER : s->render_buffer;
+    break;
+  case EGL_SWAP_BEHAVIOR:
+    v = s->swap_behavior;
+    break;
+  case EGL_TEXTURE_FORMAT:
+    v = s->texture_format;
+    break;
+  case EGL_TEXTURE_TARGET:
+    v = s->texture_target;
+    break;
+  case EGL_VG_ALPHA_FORMAT:
+    v = EGL_VG_ALPHA_FORMAT_NONPRE;
+    break;
+  case EGL_VG_COLORSPACE:
+    v = EGL_VG_COLORSPACE_sRGB;
+    break;
+  default:
+    return fail(EGL_BAD_ATTRIBUTE, fn, EGL_FALSE);
   }
   if (value == nullptr) return fail(EGL_BAD_PARAMETER, fn, EGL_FALSE);
   *value = v;
@@ -537,7 +570,8 @@ EGL_EXPORT EGLBoolean EGLAPIENTRY eglCopyBuffers(EGLDisplay dpy, EGLSurface surf
 }
 
 // §3.6.1: no config has EGL_BIND_TO_TEXTURE_RGB or _RGBA, so no surface has a texture format.
-EGL_EXPORT EGLBoolean EGLAPIENTRY eglBindTexImage(EGLDisplay dpy, EGLSurface surface, EGLint buffer) {
+EGL_EXPORT EGLBoolean EGLAPIENTRY eglBindTexImage(EGLDisplay dpy, EGLSurface surface,
+                                                  EGLint buffer) {
   const char* fn = "eglBindTexImage";
   std::lock_guard<std::mutex> lock(egl_mutex());
   EglDisplay* d = initialized_display(dpy, fn);

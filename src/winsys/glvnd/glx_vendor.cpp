@@ -31,19 +31,19 @@ template <typename F> F fetch(__GLXvendorInfo* vendor, DynamicFunction f) {
 // context's (GLX_MESA_swap_control).
 void dispatch_SwapIntervalEXT(Display* dpy, GLXDrawable drawable, int interval) {
   auto* f = fetch<decltype(&glXSwapIntervalEXT)>(g_exports->vendorFromDrawable(dpy, drawable),
-                                                  kSwapIntervalEXT);
+                                                 kSwapIntervalEXT);
   if (f != nullptr) f(dpy, drawable, interval);
 }
 
 int dispatch_SwapIntervalMESA(unsigned int interval) {
-  auto* f = fetch<decltype(&glXSwapIntervalMESA)>(g_exports->getCurrentDynDispatch(),
-                                                   kSwapIntervalMESA);
+  auto* f =
+      fetch<decltype(&glXSwapIntervalMESA)>(g_exports->getCurrentDynDispatch(), kSwapIntervalMESA);
   return f != nullptr ? f(interval) : GLX_BAD_CONTEXT;
 }
 
 int dispatch_GetSwapIntervalMESA() {
   auto* f = fetch<decltype(&glXGetSwapIntervalMESA)>(g_exports->getCurrentDynDispatch(),
-                                                      kGetSwapIntervalMESA);
+                                                     kGetSwapIntervalMESA);
   return f != nullptr ? f() : 0;
 }
 
@@ -86,9 +86,10 @@ void set_dispatch_index(const GLubyte* name, int index) {
 
 } // namespace
 
-extern "C" __attribute__((visibility("default"))) Bool
-__glx_Main(uint32_t version, const __GLXapiExports* exports, __GLXvendorInfo* /*vendor*/,
-           __GLXapiImports* imports) {
+extern "C" __attribute__((visibility("default"))) Bool __glx_Main(uint32_t version,
+                                                                  const __GLXapiExports* exports,
+                                                                  __GLXvendorInfo* /*vendor*/,
+                                                                  __GLXapiImports* imports) {
   // Any 1.x libGLX: minor versions only add to the structures.
   if (GLX_VENDOR_ABI_GET_MAJOR_VERSION(version) != GLX_VENDOR_ABI_MAJOR_VERSION) return False;
   g_exports = exports;

@@ -197,8 +197,12 @@ inline void present(Surface& s) {
   if (s.kind != SurfaceKind::Pbuffer) x11::present(s);
 }
 // Whether ctx draws into or reads the front buffer of its double-buffered window.
-inline bool uses_front(const GlxContext& ctx) { return winsys::uses_front(&ctx); }
-inline bool draws_front(const GlxContext& ctx) { return winsys::draws_front(&ctx); }
+inline bool uses_front(const GlxContext& ctx) {
+  return winsys::uses_front(&ctx);
+}
+inline bool draws_front(const GlxContext& ctx) {
+  return winsys::draws_front(&ctx);
+}
 // When the next swap of `s` may happen (GLX_EXT_swap_control pacing); records it.
 std::chrono::steady_clock::time_point swap_due(Surface& s);
 

@@ -43,9 +43,9 @@ bool depth_is_32bpp(Display* dpy, int depth) {
 // One MIT-SHM image of the target's visual; false (nothing allocated) if any step fails.
 bool shm_image(Target& t, int width, int height, XImage*& out, XShmSegmentInfo& info) {
   Display* dpy = t.dpy;
-  XImage* img = XShmCreateImage(dpy, t.format.visual, static_cast<unsigned>(t.format.depth),
-                                ZPixmap, nullptr, &info, static_cast<unsigned>(width),
-                                static_cast<unsigned>(height));
+  XImage* img =
+      XShmCreateImage(dpy, t.format.visual, static_cast<unsigned>(t.format.depth), ZPixmap, nullptr,
+                      &info, static_cast<unsigned>(width), static_cast<unsigned>(height));
   if (img == nullptr) return false;
   if (img->bits_per_pixel != 32) {
     XDestroyImage(img);
@@ -184,9 +184,9 @@ bool allocate_images(Target& t, int width, int height, bool use_shm) {
   free_images(t);
   const bool shm = use_shm && t.is_window && shm_create(t, width, height);
   if (!shm) {
-    XImage* img = XCreateImage(t.dpy, t.format.visual, static_cast<unsigned>(t.format.depth),
-                               ZPixmap, 0, nullptr, static_cast<unsigned>(width),
-                               static_cast<unsigned>(height), 32, 0);
+    XImage* img =
+        XCreateImage(t.dpy, t.format.visual, static_cast<unsigned>(t.format.depth), ZPixmap, 0,
+                     nullptr, static_cast<unsigned>(width), static_cast<unsigned>(height), 32, 0);
     if (img == nullptr) return false;
     const size_t bytes = static_cast<size_t>(img->bytes_per_line) * static_cast<size_t>(height);
     img->data = static_cast<char*>(std::calloc(std::max<size_t>(bytes, 1), 1));
@@ -270,9 +270,9 @@ void present_front(Target& t) {
   if (!t.is_window || t.front.empty() || t.image == nullptr || t.dpy == nullptr) return;
   const auto w = static_cast<unsigned>(t.width), h = static_cast<unsigned>(t.height);
   // An image header over the front buffer's memory, which has the back image's layout.
-  XImage* img = XCreateImage(t.dpy, t.format.visual, static_cast<unsigned>(t.format.depth),
-                             ZPixmap, 0, reinterpret_cast<char*>(t.front.data()), w, h, 32,
-                             t.image->bytes_per_line);
+  XImage* img =
+      XCreateImage(t.dpy, t.format.visual, static_cast<unsigned>(t.format.depth), ZPixmap, 0,
+                   reinterpret_cast<char*>(t.front.data()), w, h, 32, t.image->bytes_per_line);
   if (img == nullptr) return;
   trap_errors(t.dpy, [&] { put(t, t.x_drawable, img); });
   img->data = nullptr; // the memory is t.front's
@@ -345,8 +345,7 @@ int trap_end_replied() {
 
 bool shm_available(Display* dpy) {
   const char* no_shm = std::getenv("PINEDA_GLX_NO_SHM");
-  return XShmQueryExtension(dpy) &&
-         !(no_shm != nullptr && no_shm[0] != '\0' && no_shm[0] != '0');
+  return XShmQueryExtension(dpy) && !(no_shm != nullptr && no_shm[0] != '\0' && no_shm[0] != '0');
 }
 
 } // namespace pineda::x11
