@@ -108,12 +108,20 @@ if(PINEDA_EGL)
     ${PINEDA_SOURCE_ROOT}/src/winsys/glvnd/egl_vendor.cpp $<TARGET_OBJECTS:pineda_egl>)
   target_include_directories(pineda_egl_vendor PRIVATE ${PINEDA_EGL_GENERATED_DIR})
   add_dependencies(pineda_egl_vendor pineda_egl_generate)
-  # The vendor file of the build tree names the library by soname: LD_LIBRARY_PATH (or
-  # pineda-run) finds it in build/glvnd. The installed one names the installed file.
-  set(PINEDA_EGL_LIBRARY_PATH "libEGL_pineda.so.0")
+  # The vendor file of the build tree names the library beside it (glvnd reads a relative
+  # path with a separator from the file's folder), so EGL needs no LD_LIBRARY_PATH.
+  set(PINEDA_EGL_LIBRARY_PATH "./libEGL_pineda.so.0")
   configure_file(${PINEDA_SOURCE_ROOT}/cmake/50_pineda.json.in ${PINEDA_GLVND_DIR}/50_pineda.json
     @ONLY)
-  set(PINEDA_EGL_LIBRARY_PATH "${CMAKE_INSTALL_FULL_LIBDIR}/libEGL_pineda.so.0")
+  # Installed: a path relative to the vendor file's folder (glvnd reads a relative path with a
+  # separator that way), so that `cmake --install --prefix DIR` gives a working file; an
+  # absolute libdir or datadir is named as it is.
+  if(IS_ABSOLUTE "${CMAKE_INSTALL_LIBDIR}" OR IS_ABSOLUTE "${CMAKE_INSTALL_DATADIR}")
+    set(PINEDA_EGL_LIBRARY_PATH "${CMAKE_INSTALL_FULL_LIBDIR}/libEGL_pineda.so.0")
+  else()
+    file(RELATIVE_PATH PINEDA_EGL_LIBRARY_PATH "/root/${CMAKE_INSTALL_DATADIR}/glvnd/egl_vendor.d"
+      "/root/${CMAKE_INSTALL_LIBDIR}/libEGL_pineda.so.0")
+  endif()
   configure_file(${PINEDA_SOURCE_ROOT}/cmake/50_pineda.json.in
     ${CMAKE_BINARY_DIR}/install/50_pineda.json @ONLY)
 endif()
@@ -123,11 +131,24 @@ endif()
 set(PINEDA_RUN_LIB_DIR ${PINEDA_LIB_DIR})
 set(PINEDA_RUN_GLVND_DIR ${PINEDA_GLVND_DIR})
 set(PINEDA_RUN_JSON ${PINEDA_GLVND_DIR}/50_pineda.json)
+set(PINEDA_RUN_INSTALLED 0)
 configure_file(${PINEDA_SOURCE_ROOT}/scripts/pineda-run.in ${CMAKE_BINARY_DIR}/pineda-run @ONLY
   FILE_PERMISSIONS OWNER_READ OWNER_WRITE OWNER_EXECUTE GROUP_READ GROUP_EXECUTE WORLD_READ
   WORLD_EXECUTE)
-set(PINEDA_RUN_LIB_DIR ${CMAKE_INSTALL_FULL_LIBDIR})
-set(PINEDA_RUN_GLVND_DIR ${CMAKE_INSTALL_FULL_LIBDIR})
-set(PINEDA_RUN_JSON ${CMAKE_INSTALL_FULL_DATADIR}/glvnd/egl_vendor.d/50_pineda.json)
+# Installed, the paths are found from the script's own folder ($here), so that the prefix
+# can be chosen at install time.
+if(IS_ABSOLUTE "${CMAKE_INSTALL_BINDIR}" OR IS_ABSOLUTE "${CMAKE_INSTALL_LIBDIR}"
+   OR IS_ABSOLUTE "${CMAKE_INSTALL_DATADIR}")
+  set(PINEDA_RUN_LIB_DIR ${CMAKE_INSTALL_FULL_LIBDIR})
+  set(PINEDA_RUN_JSON ${CMAKE_INSTALL_FULL_DATADIR}/glvnd/egl_vendor.d/50_pineda.json)
+else()
+  file(RELATIVE_PATH _lib "/root/${CMAKE_INSTALL_BINDIR}" "/root/${CMAKE_INSTALL_LIBDIR}")
+  file(RELATIVE_PATH _json "/root/${CMAKE_INSTALL_BINDIR}"
+    "/root/${CMAKE_INSTALL_DATADIR}/glvnd/egl_vendor.d/50_pineda.json")
+  set(PINEDA_RUN_LIB_DIR "\$here/${_lib}")
+  set(PINEDA_RUN_JSON "\$here/${_json}")
+endif()
+set(PINEDA_RUN_GLVND_DIR ${PINEDA_RUN_LIB_DIR})
+set(PINEDA_RUN_INSTALLED 1)
 configure_file(${PINEDA_SOURCE_ROOT}/scripts/pineda-run.in ${CMAKE_BINARY_DIR}/install/pineda-run
   @ONLY)
