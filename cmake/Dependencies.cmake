@@ -4,6 +4,8 @@
 # later in the build. The parts of the build that need them are options, so a smaller build can
 # turn a part off instead:
 #   PINEDA_GLX          GLX over Xlib in libGL.so.1                     (X11, Xext/XShm)
+#   PINEDA_GLVND        EGL and the glvnd vendor libraries              (egl.xml, EGL and glvnd
+#                                                                        headers)
 #   PINEDA_TESTS        unit/API/property/thread tests                  (GoogleTest)
 #   PINEDA_X11_TESTS    the GLX tests and real programs under Xvfb      (Xvfb, mesa-utils, GLFW,
 #                                                                        freeglut, libGL, libpng)
@@ -79,6 +81,23 @@ if(PINEDA_GLX)
   pineda_require_library(PINEDA_XEXT_LIBRARY Xext libxext-dev)
 endif()
 
+# ---- EGL and the glvnd vendor libraries (cmake/Glvnd.cmake) ----
+if(PINEDA_GLVND)
+  # EGL's registry: Debian's khronos-api has no egl.xml; librust-khronos-api-dev ships one.
+  file(GLOB _pineda_egl_xml /usr/share/khronos-api/egl.xml
+    /usr/share/cargo/registry/khronos_api-*/api_egl/api/egl.xml)
+  set(_pineda_egl_xml_default /usr/share/cargo/registry/khronos_api-3.1.0/api_egl/api/egl.xml)
+  if(_pineda_egl_xml)
+    list(SORT _pineda_egl_xml)
+    list(GET _pineda_egl_xml -1 _pineda_egl_xml_default)
+  endif()
+  set(PINEDA_EGL_XML "${_pineda_egl_xml_default}" CACHE FILEPATH "Khronos EGL registry (egl.xml)")
+  pineda_require_file("${PINEDA_EGL_XML}" librust-khronos-api-dev
+    "the EGL registry (or set PINEDA_EGL_XML)")
+  pineda_require_header(PINEDA_EGL_INCLUDE_DIR EGL/eglext.h libegl-dev)
+  pineda_require_header(PINEDA_GLVND_INCLUDE_DIR glvnd/libglxabi.h libglvnd-core-dev)
+endif()
+
 # ---- tests ----
 if(PINEDA_TESTS)
   pineda_require_header(PINEDA_GTEST_INCLUDE gtest/gtest.h libgtest-dev)
@@ -99,6 +118,9 @@ if(PINEDA_X11_TESTS)
   pineda_require_program(PINEDA_GLXINFO glxinfo mesa-utils)
   pineda_require_program(PINEDA_GLXGEARS glxgears mesa-utils)
   pineda_require_header(PINEDA_FREEGLUT_INCLUDE GL/freeglut.h freeglut3-dev)
+  if(PINEDA_GLVND)
+    pineda_require_program(PINEDA_EGLINFO eglinfo mesa-utils)
+  endif()
 endif()
 
 # ---- the conformance diff: Mesa's OSMesa is the oracle (never linked into Pineda) ----

@@ -20,6 +20,7 @@ PACKAGES=(
   libxrandr-dev          # GLFW/glfw3native.h includes X11/extensions/Xrandr.h (tests/glx)
   glslang-dev glslang-tools # GLSL front end (static libraries) and glslangValidator
   libglvnd-core-dev libegl-dev # glvnd's vendor ABI headers (GLX, EGL); EGL/eglext.h
+  librust-khronos-api-dev # egl.xml, the EGL registry (khronos-api has only gl.xml, glx.xml)
   freeglut3-dev          # tests/programs: a freeglut program on Pineda
   piglit                 # scripts/piglit.sh: the external GL 1.x test list (not in the test run)
   python3-matplotlib     # scripts/sweep.sh, scaling.sh: charts (run with /usr/bin/python3)
