@@ -1,0 +1,45 @@
+// The engine's kernels compiled for AVX2: eight lanes per vector. Executable chooses them when
+// simd_level() is Avx2 or above. Every header this file needs is included before the target
+// pragma, except the math (vmath.h, lane_apply.h), which engine_kernels.h includes after it in
+// this file's own namespace (PINEDA_SIMD_NS), so that it compiles for AVX2 and is never merged
+// with the baseline copies. No FMA is enabled (and the file is built with -ffp-contract=off),
+// so the results equal the baseline ones bit for bit.
+#include "shader/engine_internal.h"
+
+#if PINEDA_HAVE_AVX2
+
+#include <immintrin.h>
+
+#include <cstdint>
+#include <cstring>
+#include <utility>
+
+#if defined(__clang__)
+#pragma clang attribute push(__attribute__((target("avx2,bmi,bmi2"))), apply_to = function)
+#else
+#pragma GCC push_options
+#pragma GCC target("avx2,bmi,bmi2")
+#endif
+
+#define PINEDA_SIMD_NS vm_avx2
+#include "shader/engine_kernels.h"
+
+namespace pineda::shader {
+
+const Kernel* kernels_avx2() { return make_kernel_table<8>(); }
+
+} // namespace pineda::shader
+
+#if defined(__clang__)
+#pragma clang attribute pop
+#else
+#pragma GCC pop_options
+#endif
+
+#else
+
+namespace pineda::shader {
+const Kernel* kernels_avx2() { return kernels_baseline(); }
+} // namespace pineda::shader
+
+#endif

@@ -1,0 +1,12 @@
+// The engine's kernels for the baseline target: four lanes per vector (SSE2 on x86-64).
+#include <cstring>
+#include <utility>
+
+#include "shader/engine_internal.h"
+#include "shader/engine_kernels.h"
+
+namespace pineda::shader {
+
+const Kernel* kernels_baseline() { return make_kernel_table<4>(); }
+
+} // namespace pineda::shader
