@@ -98,6 +98,18 @@ ValueId Function::leaf(Op op, Type t, int32_t imm) {
   return id;
 }
 
+void Function::rebuild_leaf_index() {
+  leaves_.clear();
+  for (size_t v = 0; v < insts.size(); ++v) {
+    const Inst& in = insts[v];
+    if (in.op != Op::Const && in.op != Op::Uniform && in.op != Op::Input) continue;
+    const uint64_t key = (uint64_t(static_cast<uint8_t>(in.op)) << 40) |
+                         (uint64_t(static_cast<uint8_t>(in.type)) << 32) |
+                         static_cast<uint32_t>(in.imm[0]);
+    leaves_.emplace(key, static_cast<ValueId>(v));
+  }
+}
+
 ValueId Function::constant(Type t, uint32_t bits) {
   return leaf(Op::Const, t, static_cast<int32_t>(bits));
 }

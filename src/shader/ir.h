@@ -170,6 +170,14 @@ struct Function {
     return static_cast<uint32_t>(loops.size() - 1);
   }
 
+  // Renumbers the Input leaves (the link assigns inputs after it has seen what is read).
+  template <class Fn> void remap_inputs(Fn&& fn) {
+    for (Inst& in : insts)
+      if (in.op == Op::Input) in.imm[0] = fn(in.imm[0]);
+    rebuild_leaf_index();
+  }
+  void rebuild_leaf_index();
+
   bool is_leaf(ValueId v) const {
     const Op op = insts[v].op;
     return op == Op::Const || op == Op::Uniform || op == Op::Input;

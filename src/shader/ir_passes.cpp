@@ -625,6 +625,37 @@ void optimize(Function& f) {
 
 int count_insts(const Function& f) { return count_block(f, f.body); }
 
+std::vector<uint8_t> used_values(const Function& f) {
+  std::vector<uint8_t> used(f.insts.size(), 0);
+  const auto mark = [&](ValueId v) {
+    if (v != kNoValue && v < used.size()) used[v] = 1;
+  };
+  const auto walk = [&](auto&& self, const Block& b) -> void {
+    for (const Node& n : b) {
+      if (n.kind == NodeKind::Inst) {
+        const Inst& in = f.insts[n.index];
+        for (int k = 0; k < op_arity(in.op); ++k)
+          mark(in.arg[k]);
+      } else if (n.kind == NodeKind::Region) {
+        const Region& g = f.regions[n.index];
+        mark(g.cond);
+        self(self, g.body);
+        for (const RegionOut& o : g.outs)
+          mark(o.inner), mark(o.outer);
+      } else {
+        const Loop& l = f.loops[n.index];
+        for (const LoopPhi& p : l.phis)
+          mark(p.init), mark(p.next);
+        self(self, l.body);
+        for (const LoopExit& e : l.exits)
+          mark(e.inner);
+      }
+    }
+  };
+  walk(walk, f.body);
+  return used;
+}
+
 std::vector<uint8_t> uniform_values(const Function& f) {
   std::vector<uint8_t> u(f.insts.size(), 0);
   for (size_t v = 0; v < f.insts.size(); ++v)

@@ -34,6 +34,10 @@ void optimize(Function& f);
 // Values that are the same in every lane: constants, uniforms and what only they compute.
 std::vector<uint8_t> uniform_values(const Function& f);
 
+// Values the placed code reads (operands of instructions in blocks, region conditions and
+// outs, loop phis and exits), including leaves: used[v] != 0.
+std::vector<uint8_t> used_values(const Function& f);
+
 // Number of instructions in blocks (regions and loops included).
 int count_insts(const Function& f);
 
