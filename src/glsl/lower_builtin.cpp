@@ -37,8 +37,10 @@ Comps Lowerer::builtin(TOperator o, const std::vector<TIntermTyped*>& args, cons
   const auto fl2 = [&](Op x) {
     const size_t n = std::max(a[0].size(), a[1].size());
     Comps out(n);
+    const bool compare = x == Op::Lt || x == Op::Le || x == Op::Gt || x == Op::Ge ||
+                         x == Op::Eq || x == Op::Ne;
     for (size_t k = 0; k < n; ++k)
-      out[k] = op(x, f.type(at(a[0], k)), at(a[0], k), at(a[1], k));
+      out[k] = op(x, compare ? Type::Bool : f.type(at(a[0], k)), at(a[0], k), at(a[1], k));
     return out;
   };
   const auto scale = [&](const Comps& v, float s) {
