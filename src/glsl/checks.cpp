@@ -41,13 +41,35 @@ class Assigned : public TIntermTraverser {
   }
 };
 
+bool contains_sampler(const TType& t) {
+  if (t.getBasicType() == EbtSampler) return true;
+  if (t.isStruct())
+    for (const TTypeLoc& m : *t.getStruct())
+      if (contains_sampler(*m.type)) return true;
+  return false;
+}
+
+// The largest gl_TexCoord[] the shader declares or implies by its constant indices.
+class TexCoordSize : public TIntermTraverser {
+ public:
+  int size = 0;
+  TSourceLoc loc{};
+  void visitSymbol(TIntermSymbol* s) override {
+    if (s->getName() != "gl_TexCoord" || !s->getType().isArray()) return;
+    int n = s->getType().getOuterArraySize();
+    if (n <= 0 && s->getType().getArraySizes()) n = s->getType().getArraySizes()->getImplicitSize();
+    if (n > size) size = n, loc = s->getLoc();
+  }
+};
+
 std::string where(const TSourceLoc& loc) {
   return std::to_string(loc.string) + ":" + std::to_string(loc.line);
 }
 
 } // namespace
 
-void check_compiled(const TIntermediate& ast, ShaderStage stage, std::string& errors) {
+void check_compiled(const TIntermediate& ast, ShaderStage stage, const Limits& limits,
+                    std::string& errors) {
   // OpenGL 2.1 has GLSL 1.10 and 1.20 (GL 2.1 §2.15); glslang knows every later version.
   const int v = ast.getVersion();
   if ((v != 110 && v != 120) || ast.getProfile() == EEsProfile) {
@@ -60,6 +82,34 @@ void check_compiled(const TIntermediate& ast, ShaderStage stage, std::string& er
   if (!root) return;
   Assigned a;
   root->traverse(&a);
+  // GLSL 1.10 §7.6: gl_TexCoord has at most gl_MaxTextureCoords elements (glslang sizes it
+  // by the largest index used, without that limit).
+  TexCoordSize tc;
+  root->traverse(&tc);
+  if (tc.size > limits.max_texture_coords)
+    errors += "ERROR: " + where(tc.loc) + ": 'gl_TexCoord' : index beyond gl_MaxTextureCoords (" +
+              std::to_string(limits.max_texture_coords) + ")\n";
+  // GLSL 1.10 §4.1.7: samplers are only uniforms or in-parameters: no out or inout
+  // parameter, and no function result, may hold one.
+  if (auto* seq = root->getAsAggregate()) {
+    for (TIntermNode* c : seq->getSequence()) {
+      auto* fn = c->getAsAggregate();
+      if (!fn || fn->getOp() != EOpFunction) continue;
+      if (contains_sampler(fn->getType()))
+        errors += "ERROR: " + where(fn->getLoc()) + ": '" + std::string(fn->getName().c_str()) +
+                  "' : a function cannot return a sampler\n";
+      auto* params = fn->getSequence().empty() ? nullptr : fn->getSequence()[0]->getAsAggregate();
+      if (!params) continue;
+      for (TIntermNode* p : params->getSequence()) {
+        auto* s = p->getAsSymbolNode();
+        if (!s) continue;
+        const TStorageQualifier q = s->getQualifier().storage;
+        if ((q == EvqOut || q == EvqInOut) && contains_sampler(s->getType()))
+          errors += "ERROR: " + where(s->getLoc()) + ": '" + std::string(s->getName().c_str()) +
+                    "' : samplers cannot be out or inout parameters\n";
+      }
+    }
+  }
   if (stage == ShaderStage::Fragment) {
     // GLSL 1.10 §7.2: a shader may assign gl_FragColor or gl_FragData, not both; a compile
     // error, before any dead code is removed (glslang only refuses it when linking).

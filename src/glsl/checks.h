@@ -14,7 +14,8 @@ class TIntermediate;
 namespace pineda::glsl {
 
 // After a successful parse of one shader: appends "ERROR: ..." lines to `errors`.
-void check_compiled(const glslang::TIntermediate& ast, ShaderStage stage, std::string& errors);
+void check_compiled(const glslang::TIntermediate& ast, ShaderStage stage, const Limits& limits,
+                    std::string& errors);
 
 // Before glslang's link, over the parses of one stage's shaders: globals initialized in more
 // than one of them must have the same constant initializer (GLSL 1.20 §4.3).

@@ -9,6 +9,7 @@
 #include <mutex>
 
 #include "glsl/checks.h"
+#include "glsl/const_eval.h"
 #include "glsl/glsl.h"
 #include "glsl/glslang_util.h"
 
@@ -202,10 +203,14 @@ std::shared_ptr<Shader> Shader::compile(ShaderStage stage, const std::vector<std
   std::lock_guard<std::mutex> lock(glslang_mutex());
   std::string log;
   impl.parsed = parse_shader(impl, log);
+  // Constants glslang could not fold, folded by Pineda (const_eval.h), then parsed again
+  // (glslang stops at its first error: one line at a time).
+  for (int tries = 0; !impl.parsed && tries < 64 && fold_unfolded_constants(impl.sources, log); ++tries)
+    impl.parsed = parse_shader(impl, log);
   s->log_ = log;
   if (!impl.parsed) return s;
   std::string errors;
-  check_compiled(*impl.parsed->getIntermediate(), stage, errors);
+  check_compiled(*impl.parsed->getIntermediate(), stage, limits, errors);
   if (!errors.empty()) {
     s->log_ += errors;
     impl.parsed.reset();

@@ -219,6 +219,10 @@ void Lowerer::recompute_active(ValueId base) {
 
 bool Lowerer::stmt(TIntermNode* n) {
   if (!n || !result.error.empty()) return false;
+  if (++lowered_nodes > kMaxLoweredNodes) {
+    fail("the program is too large once its functions are inlined");
+    return false;
+  }
   if (auto* a = n->getAsAggregate()) {
     switch (a->getOp()) {
     case EOpSequence:
@@ -611,7 +615,8 @@ Comps Lowerer::call(TIntermAggregate* a) {
     fail("function " + name.substr(0, name.find('(')) + " is declared but not defined");
     return zeros;
   }
-  if (fns.size() > 64) {
+  // GLSL 1.10 §6.1: recursion is not allowed (glslang does not check it for desktop GLSL).
+  if (std::find(call_stack.begin(), call_stack.end(), name) != call_stack.end() || fns.size() > 256) {
     fail("function " + name.substr(0, name.find('(')) + " calls itself (recursion)");
     return zeros;
   }
@@ -658,8 +663,10 @@ Comps Lowerer::call(TIntermAggregate* a) {
     ctx.locals.push_back(key);
   }
   fns.push_back(ctx);
+  call_stack.push_back(name);
   const ValueId saved_active = active;
   stmt_list(body);
+  call_stack.pop_back();
   FnCtx done = fns.back();
   fns.pop_back();
   active = saved_active;
@@ -725,7 +732,8 @@ bool Lowerer::run() {
       auto* s = c->getAsSymbolNode();
       if (!s) continue;
       const TStorageQualifier q = s->getQualifier().storage;
-      if (q == EvqGlobal) zero_var(s->getName().c_str(), s->getType(), false);
+      // A global is an output only for the constant evaluator (const_eval.cpp).
+      if (q == EvqGlobal) zero_var(s->getName().c_str(), s->getType(), lenv.output(s->getName().c_str(), 0) >= 0);
       if (q == EvqVaryingOut) zero_var(s->getName().c_str(), s->getType(), true);
     }
   }

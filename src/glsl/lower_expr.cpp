@@ -218,17 +218,26 @@ Ref Lowerer::ref(TIntermTyped* n) {
   bool is_const = false;
   const int i = const_int(*this, b->getRight(), is_const);
   if (!r.swz.empty()) {
-    // A component of a swizzle.
+    // A component of a swizzle: constant, or one of the swizzle's components.
     if (is_const) {
       r.swz = {r.swz[static_cast<size_t>(std::clamp(i, 0, static_cast<int>(r.swz.size()) - 1))]};
       return r;
     }
-    Ref t;
-    t.root = load(r);
-    t.root_types.assign(t.root.size(), f.type(t.root[0]));
-    t.count = static_cast<int>(t.root.size());
-    n_el = t.count;
-    r = t;
+    if (r.uniform) {
+      // Uniforms are read-only: the swizzled values are the root.
+      Ref t;
+      t.root = load(r);
+      t.root_types.assign(t.root.size(), f.type(t.root[0]));
+      t.count = static_cast<int>(t.root.size());
+      n_el = t.count;
+      r = t;
+    } else {
+      Ref::Dyn d{expr(b->getRight())[0], 0, static_cast<int>(r.swz.size()), r.swz};
+      r.swz.clear();
+      r.dyn.push_back(d);
+      r.count = 1;
+      return r;
+    }
   }
   if (is_const) {
     r.base += std::clamp(i, 0, n_el - 1) * esize;
@@ -248,28 +257,38 @@ ValueId Lowerer::pick(const Comps& cands, ValueId index) {
 
 namespace {
 
-// The combined offset of a reference's dynamic indices, and every value it can take.
-struct DynOffsets {
+// The combined offset of a reference's dynamic indices as a value, clamped index by index (for
+// uniform gathers, whose indices are strides).
+ValueId dyn_offset_value(Lowerer& L, const Ref& r, int& extent) {
   ValueId value = kNoValue;
-  std::vector<int> offsets; // offsets[j]: the j-th combination
-};
-
-DynOffsets dyn_offsets(Lowerer& L, const Ref& r) {
-  DynOffsets d;
-  d.offsets = {0};
+  extent = 1;
   for (const Ref::Dyn& x : r.dyn) {
-    std::vector<int> next;
-    for (int o : d.offsets)
-      for (int i = 0; i < x.count; ++i)
-        next.push_back(o + i * x.stride);
-    d.offsets = next;
-    // Out-of-range indices are undefined: each index is clamped to its array.
     ValueId idx = L.op(Op::Max, Type::Int, x.index, L.f.const_i(0));
     idx = L.op(Op::Min, Type::Int, idx, L.f.const_i(x.count - 1));
     const ValueId term = L.op(Op::Mul, Type::Int, idx, L.f.const_i(x.stride));
-    d.value = d.value == kNoValue ? term : L.op(Op::Add, Type::Int, d.value, term);
+    value = value == kNoValue ? term : L.op(Op::Add, Type::Int, value, term);
+    extent += (x.count - 1) * x.stride;
   }
-  return d;
+  return value;
+}
+
+// Every combination of a reference's dynamic indices: the condition selecting it and the
+// offset it adds. An index out of its array's range selects nothing (GLSL leaves it undefined).
+struct DynCase {
+  ValueId cond;
+  int offset;
+};
+std::vector<DynCase> dyn_cases(Lowerer& L, const Ref& r) {
+  std::vector<DynCase> cases{{L.f.const_b(true), 0}};
+  for (const Ref::Dyn& x : r.dyn) {
+    std::vector<DynCase> next;
+    for (const DynCase& c : cases)
+      for (int i = 0; i < x.count; ++i)
+        next.push_back({L.and_(c.cond, L.op(Op::Eq, Type::Bool, x.index, L.f.const_i(i))),
+                        c.offset + x.offset(i)});
+    cases = std::move(next);
+  }
+  return cases;
 }
 
 } // namespace
@@ -292,10 +311,9 @@ Comps Lowerer::load(const Ref& r) {
         out[static_cast<size_t>(k)] = f.emit_imm(*cur, Op::UniformIndexed, t, word,
                                                  r.dyn[0].stride, r.dyn[0].count, idx);
       } else {
-        const DynOffsets d = dyn_offsets(*this, r);
-        const int extent = *std::max_element(d.offsets.begin(), d.offsets.end()) + 1;
-        out[static_cast<size_t>(k)] =
-            f.emit_imm(*cur, Op::UniformIndexed, t, word, 1, extent, d.value);
+        int extent = 1;
+        const ValueId offset = dyn_offset_value(*this, r, extent);
+        out[static_cast<size_t>(k)] = f.emit_imm(*cur, Op::UniformIndexed, t, word, 1, extent, offset);
       }
     }
     return out;
@@ -305,16 +323,15 @@ Comps Lowerer::load(const Ref& r) {
       out[static_cast<size_t>(k)] = r.root[static_cast<size_t>(r.comp(k))];
     return out;
   }
-  const DynOffsets d = dyn_offsets(*this, r);
+  const std::vector<DynCase> cases = dyn_cases(*this, r);
   for (int k = 0; k < n; ++k) {
-    // The candidates, in the order of the combined offset's values.
     const auto cand = [&](size_t j) {
-      const size_t at = static_cast<size_t>(r.comp(k) + d.offsets[j]);
+      const size_t at = static_cast<size_t>(r.comp(k) + cases[j].offset);
       return at < r.root.size() ? r.root[at] : r.root.back();
     };
     ValueId v = cand(0);
-    for (size_t j = 1; j < d.offsets.size(); ++j)
-      v = select(op(Op::Eq, Type::Bool, d.value, f.const_i(d.offsets[j])), cand(j), v);
+    for (size_t j = 1; j < cases.size(); ++j)
+      v = select(cases[j].cond, cand(j), v);
     out[static_cast<size_t>(k)] = v;
   }
   return out;
@@ -336,18 +353,26 @@ void Lowerer::store(const Ref& r, const Comps& v) {
   if (outputs.count(r.key)) result.written.insert(r.key);
   Comps& dst = env[r.key];
   const int n = r.size();
+  // Values take the destination's type (out parameters convert on the way back, GLSL 1.20
+  // §6.1.1).
+  Comps cv = v;
+  for (int k = 0; k < n && k < static_cast<int>(cv.size()); ++k) {
+    const size_t at = static_cast<size_t>(r.comp(k));
+    if (at < r.root_types.size() && r.root_types[at] != kSamplerType && !is_sampler(cv[static_cast<size_t>(k)]) &&
+        cv[static_cast<size_t>(k)] != kNoValue && f.type(cv[static_cast<size_t>(k)]) != r.root_types[at])
+      cv[static_cast<size_t>(k)] = convert(cv[static_cast<size_t>(k)], r.root_types[at]);
+  }
   if (r.dyn.empty()) {
-    for (int k = 0; k < n && k < static_cast<int>(v.size()); ++k)
-      assign_comp(dst, static_cast<size_t>(r.comp(k)), v[static_cast<size_t>(k)]);
+    for (int k = 0; k < n && k < static_cast<int>(cv.size()); ++k)
+      assign_comp(dst, static_cast<size_t>(r.comp(k)), cv[static_cast<size_t>(k)]);
     return;
   }
-  const DynOffsets d = dyn_offsets(*this, r);
-  for (int o : d.offsets) {
-    const ValueId hit = and_(active_value(), op(Op::Eq, Type::Bool, d.value, f.const_i(o)));
-    for (int k = 0; k < n && k < static_cast<int>(v.size()); ++k) {
-      const size_t at = static_cast<size_t>(r.comp(k) + o);
+  for (const DynCase& c : dyn_cases(*this, r)) {
+    const ValueId hit = and_(active_value(), c.cond);
+    for (int k = 0; k < n && k < static_cast<int>(cv.size()); ++k) {
+      const size_t at = static_cast<size_t>(r.comp(k) + c.offset);
       if (at >= dst.size()) continue;
-      dst[at] = select(hit, v[static_cast<size_t>(k)], dst[at]);
+      dst[at] = select(hit, cv[static_cast<size_t>(k)], dst[at]);
     }
   }
 }
@@ -375,6 +400,7 @@ Comps Lowerer::componentwise(Op o, Type t, const Comps& a, const Comps& b) {
 
 Comps Lowerer::expr(TIntermTyped* n) {
   if (!n) return {};
+  if (++lowered_nodes > kMaxLoweredNodes) fail("the program is too large once its functions are inlined");
   if (!result.error.empty()) {
     std::vector<Type> ts;
     flat_types(n->getType(), ts);
@@ -660,7 +686,7 @@ Comps Lowerer::unary(TIntermUnary* u) {
 Comps Lowerer::aggregate(TIntermAggregate* a) {
   if (a->getOp() == EOpFunctionCall) return call(a);
   if (a->isConstructor()) return construct(a);
-  if (a->getOp() == EOpSequence) {
+  if (a->getOp() == EOpSequence || a->getOp() == EOpComma) {
     Comps last;
     for (TIntermNode* c : a->getSequence())
       if (auto* t = c->getAsTyped()) last = expr(t);

@@ -54,6 +54,8 @@ struct Ref {
   struct Dyn {
     ValueId index;
     int stride, count;
+    std::vector<int> table; // offsets of the elements when not i * stride (a swizzle's)
+    int offset(int i) const { return table.empty() ? i * stride : table[static_cast<size_t>(i)]; }
   };
   std::vector<Dyn> dyn;
   std::vector<int> swz;
@@ -141,6 +143,11 @@ class Lowerer {
   std::vector<FnCtx> fns;
   bool has_kill = false;
   int serial = 0;
+  // Every call is inlined: a program whose calls multiply beyond this many lowered nodes
+  // fails to link instead of taking the process's memory and time.
+  static constexpr long kMaxLoweredNodes = 400000;
+  long lowered_nodes = 0;
+  std::vector<std::string> call_stack;
   int unroll_budget = 20000;
 
   std::unordered_map<std::string, glslang::TIntermAggregate*> functions;

@@ -231,6 +231,11 @@ bool debug_ir() {
   return d && std::strstr(d, "ir") != nullptr;
 }
 
+bool debug_ir_raw() {
+  const char* d = std::getenv("PINEDA_DEBUG");
+  return d && std::strstr(d, "ir-raw") != nullptr;
+}
+
 } // namespace
 
 Program::~Program() = default;
@@ -337,13 +342,30 @@ std::unique_ptr<Program> Program::link(const std::vector<std::shared_ptr<const S
     check_stage_globals(asts, errors);
     if (!errors.empty()) return fail(errors);
   }
-  TProgram prog;
-  for (auto& v : parsed)
-    for (auto& t : v)
-      prog.addShader(t.get());
-  if (!prog.link(EShMsgDefault)) return fail(prog.getInfoLog());
-  const TIntermediate* vs_ast = stage_shaders[0].empty() ? nullptr : prog.getIntermediate(EShLangVertex);
-  const TIntermediate* fs_ast = stage_shaders[1].empty() ? nullptr : prog.getIntermediate(EShLangFragment);
+  // Each stage is linked by glslang on its own: the checks between the stages are Pineda's
+  // (glslang's refuse valid programs, e.g. gl_TexCoord sized differently in the two stages).
+  TProgram progs[2];
+  const TIntermediate* asts[2] = {nullptr, nullptr};
+  for (int st = 0; st < 2; ++st) {
+    if (parsed[st].empty()) continue;
+    for (auto& t : parsed[st])
+      progs[st].addShader(t.get());
+    if (!progs[st].link(EShMsgDefault)) {
+      // A call to a function without a body is an error only if the call can run: the
+      // lowering reports it then (glslang reports it even in dead code, which GLSL allows).
+      const std::string info = progs[st].getInfoLog();
+      bool only_missing_bodies = info.find("No function definition (body) found") != std::string::npos;
+      for (size_t pos = 0; only_missing_bodies && (pos = info.find("ERROR:", pos)) != std::string::npos; ++pos) {
+        const size_t eol = info.find('\n', pos);
+        only_missing_bodies = info.substr(pos, eol - pos).find("No function definition (body) found") != std::string::npos;
+      }
+      if (!only_missing_bodies || !progs[st].getIntermediate(st == 0 ? EShLangVertex : EShLangFragment))
+        return fail(info);
+    }
+    asts[st] = progs[st].getIntermediate(st == 0 ? EShLangVertex : EShLangFragment);
+  }
+  const TIntermediate* vs_ast = asts[0];
+  const TIntermediate* fs_ast = asts[1];
 
   // ---- interface checks (GLSL 1.20 §4.3.5, §4.3.6) ----
   const std::vector<Decl> vs_decls = declarations(vs_ast), fs_decls = declarations(fs_ast);
@@ -352,7 +374,12 @@ std::unique_ptr<Program> Program::link(const std::vector<std::shared_ptr<const S
       if (f.name != v.name) continue;
       if (f.storage == EvqUniform && v.storage == EvqUniform && !same_type(*f.type, *v.type))
         return fail("ERROR: Linking: uniform '" + f.name + "' has different types in the vertex and fragment shaders");
-      if (f.storage == EvqVaryingIn && v.storage == EvqVaryingOut && !same_type(*f.type, *v.type))
+      if (f.storage == EvqUniform && v.storage == EvqUniform && f.sym->getConstArray().size() > 0 &&
+          v.sym->getConstArray().size() > 0 && !(f.sym->getConstArray() == v.sym->getConstArray()))
+        return fail("ERROR: Linking: uniform '" + f.name + "' has different initializers in the vertex and fragment shaders");
+      // (gl_TexCoord may have different sizes in the two stages, GLSL 1.10 §7.6.)
+      if (f.storage == EvqVaryingIn && v.storage == EvqVaryingOut && f.name.rfind("gl_", 0) != 0 &&
+          !same_type(*f.type, *v.type))
         return fail("ERROR: Linking: varying '" + f.name + "' has different types in the vertex and fragment shaders");
     }
   }
@@ -394,6 +421,7 @@ std::unique_ptr<Program> Program::link(const std::vector<std::shared_ptr<const S
     };
     if (!lower_stage(*fs_ast, shader::Stage::Fragment, env, fs_ir, fs_res))
       return fail("ERROR: Linking fragment shader: " + fs_res.error);
+    if (debug_ir_raw()) std::fprintf(stderr, "fragment shader IR before optimization:\n%s", shader::print(fs_ir).c_str());
     shader::optimize(fs_ir);
     impl.frag_color = fs_res.written.count("gl_FragColor") > 0;
     impl.frag_depth = fs_res.written.count("gl_FragDepth") > 0;
@@ -484,7 +512,14 @@ std::unique_ptr<Program> Program::link(const std::vector<std::shared_ptr<const S
     };
     if (!lower_stage(*vs_ast, shader::Stage::Vertex, env, vs_ir, vs_res))
       return fail("ERROR: Linking vertex shader: " + vs_res.error);
+    if (debug_ir_raw()) std::fprintf(stderr, "vertex shader IR before optimization:\n%s", shader::print(vs_ir).c_str());
     shader::optimize(vs_ir);
+    // GLSL 1.10 §7.1: "The variable gl_Position is available only in the vertex language and
+    // is intended for writing the homogeneous vertex position. All executions of a
+    // well-formed vertex shader must write a value into this variable." (a link error, as Mesa
+    // makes it below GLSL 1.40).
+    if (!vs_res.written.count("gl_Position"))
+      return fail("ERROR: Linking: the vertex shader does not write gl_Position");
     // GLSL 1.10 §4.3.6 (as Mesa): a varying the fragment shader reads must be written.
     for (const std::string& n : fs_read_varyings)
       if (!vs_res.written.count(n))

@@ -6,6 +6,7 @@
 #include <cstring>
 
 #include "shader/engine_internal.h"
+#include "shader/fp_env.h"
 
 namespace pineda::shader {
 
@@ -92,7 +93,9 @@ void Executable::prepare(const uint32_t* uniform_words, Prepared& out) const {
   out.uniforms = uniform_words;
   const SimdLevel level = simd_level();
   const int w = level_width(level);
+  ShaderFpEnv env;
   RunState rs;
+  rs.caller_csr = env.saved();
   rs.uniforms = uniform_words;
   char* base = align64(out.splats.data());
   Frame f{base, base, impl_->prologue[level_index(level)].data(), &rs, 16 / w};
@@ -103,7 +106,9 @@ void Executable::run_vertices(const Prepared& p, const VertexBatch& batch, void*
   const SimdLevel level = simd_level();
   const int w = level_width(level);
   char* regs = align64(scratch);
+  ShaderFpEnv env;
   RunState rs;
+  rs.caller_csr = env.saved();
   rs.in = batch.in;
   rs.out = batch.out;
   rs.uniforms = p.uniforms;
@@ -126,7 +131,9 @@ uint64_t Executable::run_fragments(const Prepared& p, const FragmentQuads& q, vo
   const SimdLevel level = simd_level();
   const int w = level_width(level);
   char* regs = align64(scratch);
+  ShaderFpEnv env;
   RunState rs;
+  rs.caller_csr = env.saved();
   rs.in = q.in;
   rs.out = q.out;
   rs.uniforms = p.uniforms;

@@ -5,6 +5,7 @@
 // with the baseline copies. No FMA is enabled (and the file is built with -ffp-contract=off),
 // so the results equal the baseline ones bit for bit.
 #include "shader/engine_internal.h"
+#include "shader/fp_env.h"
 
 #if PINEDA_HAVE_AVX2
 

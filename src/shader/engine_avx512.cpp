@@ -5,6 +5,7 @@
 // AVX-512 and is never merged with the baseline copies. AVX-512F brings FMA, but the file is
 // built with -ffp-contract=off, so the results equal the baseline ones bit for bit.
 #include "shader/engine_internal.h"
+#include "shader/fp_env.h"
 
 #if PINEDA_HAVE_AVX512
 

@@ -105,6 +105,7 @@ struct RunState {
   uint32_t budget = kRunIterationBudget;
   uint64_t kill = 0;
   float* tmp = nullptr; // 4 * kBlockLanes floats for splatted texture operands
+  uint32_t caller_csr = 0; // the caller's floating-point environment (fp_env.h)
 };
 
 struct Frame {

@@ -8,6 +8,7 @@
 #include <utility>
 
 #include "shader/engine_internal.h"
+#include "shader/fp_env.h"
 #include "shader/lane_apply.h"
 
 namespace pineda::shader {
@@ -165,7 +166,7 @@ template <int W> const Instr* k_tex(const Instr* ip, Frame& f) {
   for (int k = 0; k < 4; ++k)
     req.rgba[k] = reinterpret_cast<float*>(f.regs + t.dst[k]);
   if (rs.sampler) {
-    rs.sampler->sample(req);
+    with_fp_env(rs.caller_csr, [&] { rs.sampler->sample(req); });
   } else {
     // No sampler: what an incomplete texture gives (GL 2.1 §3.8.10), (0, 0, 0, 1).
     for (int k = 0; k < 4; ++k)

@@ -3,6 +3,7 @@
 // operations to the engine's lane operations.
 #include "shader/ir_passes.h"
 
+#include "shader/fp_env.h"
 #include "shader/lane_apply.h"
 
 namespace pineda::shader {
@@ -182,6 +183,7 @@ uint32_t eval_lane_op(LaneOp op, uint32_t a, uint32_t b, uint32_t c) {
     r[1] = r[2] = r[3] = r[0];
     return r;
   };
+  ShaderFpEnv env;
   const F4 r = kFold[static_cast<int>(op)](bits(a), bits(b), bits(c));
   uint32_t out;
   const float lane0 = r[0];

@@ -78,6 +78,27 @@ bool is_false(const Function& f, ValueId v) {
   return f.is_const(v) && f.type(v) == Type::Bool && f.const_bits(v) == 0;
 }
 
+// Marks the values a block defines (instructions, and the phis of its regions and loops).
+void mark_defined(const Function& f, const Block& b, std::vector<uint8_t>& out) {
+  for (const Node& n : b) {
+    if (n.kind == NodeKind::Inst) {
+      if (n.index < out.size()) out[n.index] = 1;
+    } else if (n.kind == NodeKind::Region) {
+      const Region& g = f.regions[n.index];
+      mark_defined(f, g.body, out);
+      for (const RegionOut& o : g.outs)
+        if (o.phi < out.size()) out[o.phi] = 1;
+    } else {
+      const Loop& l = f.loops[n.index];
+      for (const LoopPhi& p : l.phis)
+        if (p.phi < out.size()) out[p.phi] = 1;
+      mark_defined(f, l.body, out);
+      for (const LoopExit& e : l.exits)
+        if (e.out < out.size()) out[e.out] = 1;
+    }
+  }
+}
+
 struct Simplifier {
   Function& f;
   Repl r;
@@ -257,8 +278,21 @@ struct Simplifier {
       phis.push_back(p);
     }
     l.phis = std::move(phis);
-    for (LoopExit& e : l.exits)
+    // Exits of values the loop does not define are those values.
+    std::vector<uint8_t> inside(f.insts.size(), 0);
+    for (const LoopPhi& p : l.phis)
+      inside[p.phi] = 1;
+    mark_defined(f, l.body, inside);
+    std::vector<LoopExit> exits;
+    for (LoopExit& e : l.exits) {
       e.inner = r(e.inner);
+      if (e.inner < inside.size() && !inside[e.inner]) {
+        replace(e.out, e.inner);
+        continue;
+      }
+      exits.push_back(e);
+    }
+    l.exits = std::move(exits);
     // An exit test that never passes: the body up to it runs once.
     size_t exit_at = l.body.size();
     for (size_t k = 0; k < l.body.size(); ++k)

@@ -43,8 +43,10 @@ template <class I> inline I seli(I m, I a, I b) { return (a & m) | (b & ~m); }
 
 template <class F> inline F splat(float v) { return F{} + v; }
 
-template <class F> inline F vmin(F a, F b) { return sel(a < b, a, b); }
-template <class F> inline F vmax(F a, F b) { return sel(a > b, a, b); }
+// min and max return the operand that is a number when the other is NaN (IEEE 754 minNum,
+// maxNum; piglit's fs-nan-builtin-min/max check it).
+template <class F> inline F vmin(F a, F b) { return sel((a < b) | (b != b), a, b); }
+template <class F> inline F vmax(F a, F b) { return sel((a > b) | (b != b), a, b); }
 
 template <class F> inline F vabs(F x) { return as_float<F>(as_int(x) & 0x7fffffff); }
 

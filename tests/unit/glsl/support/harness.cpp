@@ -198,11 +198,16 @@ Vec4 Pipeline::pixel(int x, int y) const {
 void Pipeline::draw_rect(float x, float y, float w, float h) {
   std::vector<std::vector<float>> in(4, attrib_defaults);
   const float xs[4] = {x, x + w, x, x + w}, ys[4] = {y, y, y + h, y + h};
+  // The position goes to gl_Vertex and to piglit's generic attribute piglit_vertex.
+  const int generic = program.attrib_location("piglit_vertex");
   for (size_t v = 0; v < 4; ++v) {
-    in[v][kInVertex * 4 + 0] = xs[v];
-    in[v][kInVertex * 4 + 1] = ys[v];
-    in[v][kInVertex * 4 + 2] = 0.0f;
-    in[v][kInVertex * 4 + 3] = 1.0f;
+    for (int slot : {static_cast<int>(kInVertex), generic < 0 ? -1 : kInGeneric0 + generic}) {
+      if (slot < 0) continue;
+      in[v][static_cast<size_t>(slot * 4 + 0)] = xs[v];
+      in[v][static_cast<size_t>(slot * 4 + 1)] = ys[v];
+      in[v][static_cast<size_t>(slot * 4 + 2)] = 0.0f;
+      in[v][static_cast<size_t>(slot * 4 + 3)] = 1.0f;
+    }
   }
   std::vector<std::vector<float>> out;
   if (program.vertex()) {
