@@ -145,6 +145,10 @@ class Program {
   // The fragment shader writes gl_FragColor (to every draw buffer) rather than gl_FragData[].
   bool writes_frag_color() const;
   bool writes_frag_depth() const;
+  // Where flat component `comp` of user varying `name` went when the link packed the varyings
+  // the fragment shader reads: index k, so fragment input kFragVarying0 * 4 + k and vertex
+  // output kOutVarying0 * 4 + k (shader/io.h); -1 when the fragment shader does not read it.
+  int varying_component(const std::string& name, int comp) const;
   // The optimized IR of each stage, for PINEDA_DEBUG=ir.
   const std::string& ir_text() const;
 

@@ -45,11 +45,14 @@ bool contains_kill(TIntermNode* n) {
   return found;
 }
 
-int node_count(TIntermNode* n) {
+// AST nodes, with the bodies of nested loops counted as if unrolled 64 times: the size an
+// unrolled loop may grow to.
+long node_count(TIntermNode* n) {
   if (!n) return 0;
-  int c = 1;
+  long c = 1;
   children(n, [&](TIntermNode* k) { c += node_count(k); });
-  return c;
+  if (n->getAsLoopNode()) c *= 64;
+  return std::min(c, 1L << 40);
 }
 
 bool is_local_storage(TStorageQualifier q) {
@@ -570,7 +573,7 @@ bool Lowerer::try_unroll(TIntermLoop* l) {
     if (values.size() > 64) return false;
     v = shader::eval_lane_op(step_op, v, step, 0);
   }
-  const int cost = static_cast<int>(values.size()) * node_count(l->getBody());
+  const long cost = static_cast<long>(values.size()) * node_count(l->getBody());
   if (cost > unroll_budget) return false;
   unroll_budget -= cost;
 

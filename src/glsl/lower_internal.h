@@ -148,7 +148,7 @@ class Lowerer {
   static constexpr long kMaxLoweredNodes = 400000;
   long lowered_nodes = 0;
   std::vector<std::string> call_stack;
-  int unroll_budget = 20000;
+  long unroll_budget = 20000;
 
   std::unordered_map<std::string, glslang::TIntermAggregate*> functions;
   std::unordered_map<const TIntermNode*, bool> jump_memo, effect_memo;

@@ -32,6 +32,7 @@ struct ProgramImpl {
   std::unique_ptr<shader::Executable> vs, fs;
   bool frag_color = false, frag_depth = false;
   std::string ir;
+  std::map<std::pair<std::string, int>, int> packed; // varying component -> packed index
 };
 
 namespace {
@@ -251,6 +252,11 @@ const shader::Executable* Program::fragment() const { return impl_->fs.get(); }
 bool Program::writes_frag_color() const { return impl_->frag_color; }
 bool Program::writes_frag_depth() const { return impl_->frag_depth; }
 const std::string& Program::ir_text() const { return impl_->ir; }
+
+int Program::varying_component(const std::string& name, int comp) const {
+  auto it = impl_->packed.find({name, comp});
+  return it == impl_->packed.end() ? -1 : it->second;
+}
 
 size_t Program::max_uniform_name_length() const {
   size_t n = 0;
@@ -696,6 +702,7 @@ std::unique_ptr<Program> Program::link(const std::vector<std::shared_ptr<const S
     if (fs_ast) impl.ir += "fragment shader IR:\n" + shader::print(fs_ir) + impl.fs->disassemble();
     if (debug_ir()) std::fputs(impl.ir.c_str(), stderr);
   }
+  impl.packed = packed;
   p->linked_ = true;
   return p;
 }

@@ -31,6 +31,7 @@ int main(int argc, char** argv) {
   std::map<std::string, Count> by_kind;
   std::map<std::string, int> skip_reasons;
   std::vector<double> times;
+  std::vector<std::pair<double, std::string>> slowest;
   for (const std::string& f : files) {
     if (!filter.empty() && f.find(filter) == std::string::npos) continue;
     const CaseResult r = run_case(f);
@@ -50,7 +51,10 @@ int main(int argc, char** argv) {
       ++c.skip;
       ++skip_reasons[r.why.substr(0, 40)];
     }
-    if (r.compile_link_ms > 0) times.push_back(r.compile_link_ms);
+    if (r.compile_link_ms > 0) {
+      times.push_back(r.compile_link_ms);
+      slowest.emplace_back(r.compile_link_ms, f.substr(dir.size() + 1));
+    }
   }
   int pass = 0, fail = 0, skip = 0;
   for (const auto& [k, c] : by_kind) {
@@ -65,6 +69,9 @@ int main(int argc, char** argv) {
     std::printf("compile+link per program: median %.2f ms, 90th percentile %.2f ms, max %.1f ms (%zu programs)\n",
                 times[times.size() / 2], times[times.size() * 9 / 10], times.back(), times.size());
   }
+  std::sort(slowest.rbegin(), slowest.rend());
+  for (size_t i = 0; i < slowest.size() && i < 5; ++i)
+    std::printf("  slow: %8.1f ms  %s\n", slowest[i].first, slowest[i].second.c_str());
   if (!quiet) {
     std::vector<std::pair<int, std::string>> reasons;
     for (const auto& [r, n] : skip_reasons)
