@@ -353,9 +353,10 @@ bool Lowerer::branch(TIntermBranch* b) {
     add(loops.back().cont);
     return true;
   case EOpReturn: {
-    FnCtx& fn = fns.back();
+    // The expression may call functions (which push frames): the frame is looked at after it.
+    const Comps v = b->getExpression() ? expr(b->getExpression()) : Comps{};
+    const FnCtx fn = fns.back();
     if (b->getExpression()) {
-      const Comps v = expr(b->getExpression());
       Comps& rv = env[fn.retval];
       rv.resize(v.size(), kNoValue);
       for (size_t k = 0; k < v.size(); ++k) {
