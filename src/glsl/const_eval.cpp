@@ -181,6 +181,18 @@ bool fold_unfolded_constants(std::vector<std::string>& sources, const std::strin
   }
   if (spots.empty()) return false;
   bool changed = false;
+  static const std::regex decl(R"(^(\s*const\s+(\w+)\s+\w+\s*=\s*)(.*);\s*$)");
+  // The constants declared before `begin`, which the expressions may use.
+  const auto prelude_before = [&](const std::string& src, size_t begin) {
+    std::string prelude;
+    std::istringstream before(src.substr(0, begin));
+    for (std::string line; std::getline(before, line);) {
+      std::smatch pm;
+      if (std::regex_match(line, pm, decl)) prelude += line + "\n";
+    }
+    return prelude;
+  };
+  std::string prelude;
   const auto fold_brackets = [&](const std::string& text, int version, std::string& replaced) {
     // Every bracketed expression that is not a plain number: an array size (or an index,
     // which the value replaces just as well).
@@ -205,7 +217,7 @@ bool fold_unfolded_constants(std::vector<std::string>& sources, const std::strin
       std::string lit;
       const bool plain = inner.find_first_not_of("0123456789 ") == std::string::npos;
       if (!plain && inner.find_first_of("(=<>!?") != std::string::npos &&
-          evaluate_constant("int", inner, version, lit)) {
+          evaluate_constant("int", inner, version, lit, prelude)) {
         replaced += "[" + lit + "]";
         any = true;
       } else {
@@ -226,6 +238,7 @@ bool fold_unfolded_constants(std::vector<std::string>& sources, const std::strin
       if (begin != std::string::npos) ++begin;
     }
     if (begin == std::string::npos) continue;
+    prelude = prelude_before(src, begin);
     if (sp.array_size) {
       // glslang stops at its first error: the lines after it likely have the same kind of
       // size, so they are folded too, in one go.
@@ -247,18 +260,8 @@ bool fold_unfolded_constants(std::vector<std::string>& sources, const std::strin
     size_t end = src.find('\n', begin);
     if (end == std::string::npos) end = src.size();
     const std::string text = src.substr(begin, end - begin);
-    static const std::regex decl(R"(^(\s*const\s+(\w+)\s+\w+\s*=\s*)(.*);\s*$)");
     std::smatch m;
     if (!std::regex_match(text, m, decl)) continue;
-    // The constants declared before it, which it may use.
-    std::string prelude;
-    {
-      std::istringstream before(src.substr(0, begin));
-      for (std::string line; std::getline(before, line);) {
-        std::smatch pm;
-        if (std::regex_match(line, pm, decl)) prelude += line + "\n";
-      }
-    }
     std::string lit;
     if (!evaluate_constant(m[2].str(), m[3].str(), version, lit, prelude)) continue;
     src.replace(begin, end - begin, m[1].str() + lit + ";");

@@ -117,6 +117,32 @@ void Pipeline::set_builtin_state() {
     } else if (b.name == "gl_DepthRange.far" || b.name == "gl_DepthRange.diff" ||
                b.name == "gl_NormalScale" || b.name == "gl_Point.size") {
       put(0, 1.0f);
+    } else {
+      // GL 2.1 Table 6.9's initial lighting state, the rest zero.
+      const auto ends = [&](const char* s) { return b.name.size() >= std::strlen(s) &&
+                                                    b.name.compare(b.name.size() - std::strlen(s), std::string::npos, s) == 0; };
+      const bool light0 = b.name.rfind("gl_LightSource[0]", 0) == 0;
+      if (b.name.rfind("gl_LightSource[", 0) == 0) {
+        if (ends(".ambient")) put(3, 1.0f);
+        if (ends(".diffuse") || ends(".specular")) {
+          for (int k = 0; k < 3; ++k) put(k, light0 ? 1.0f : 0.0f);
+          put(3, 1.0f);
+        }
+        if (ends(".position")) put(2, 1.0f);
+        if (ends(".spotDirection")) put(2, -1.0f);
+        if (ends(".spotCutoff")) put(0, 180.0f);
+        if (ends(".spotCosCutoff")) put(0, -1.0f);
+        if (ends(".constantAttenuation")) put(0, 1.0f);
+      } else if (b.name.find("Material.") != std::string::npos) {
+        const float v = ends(".ambient") ? 0.2f : ends(".diffuse") ? 0.8f : 0.0f;
+        if (b.type == GL_FLOAT_VEC4) {
+          for (int k = 0; k < 3; ++k) put(k, v);
+          put(3, 1.0f);
+        }
+      } else if (b.name == "gl_LightModel.ambient") {
+        for (int k = 0; k < 3; ++k) put(k, 0.2f);
+        put(3, 1.0f);
+      }
     }
   }
 }

@@ -147,8 +147,18 @@ std::string parse_shader_test(const std::string& src, ShaderTest& t) {
       } else if (w[0] == "SIZE" && w.size() >= 3) {
         t.width = std::atoi(w[1].c_str());
         t.height = std::atoi(w[2].c_str());
-      } else if (w[0].rfind("GL_MAX", 0) == 0 || w[0] == "rlimit") {
-        continue; // limits: Pineda's are at least GL 2.1's
+      } else if (w[0].rfind("GL_MAX", 0) == 0 && w.size() >= 3) {
+        // Limits beyond Pineda's (glsl.h Limits) skip the test.
+        const glsl::Limits lim;
+        const int want = std::atoi(w[2].c_str());
+        const int have = w[0] == "GL_MAX_FRAGMENT_UNIFORM_COMPONENTS" ? lim.max_fragment_uniform_components
+                         : w[0] == "GL_MAX_VERTEX_UNIFORM_COMPONENTS" ? lim.max_vertex_uniform_components
+                         : w[0] == "GL_MAX_VARYING_FLOATS" || w[0] == "GL_MAX_VARYING_COMPONENTS" ? lim.max_varying_floats
+                         : 1 << 30;
+        if (want > have) return w[0] + " " + w[2];
+        continue;
+      } else if (w[0] == "rlimit") {
+        continue;
       } else if (w[0].rfind("GL_", 0) == 0) {
         return "requires " + w[0];
       }
