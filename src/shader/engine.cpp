@@ -13,20 +13,20 @@ namespace pineda::shader {
 struct ExecutableImpl {
   Stage stage = Stage::Vertex;
   Code code;
-  // Threaded code per level: [level][instruction].
-  std::vector<Instr> prologue[3], main[3];
+  // Threaded code per level: [level][instruction]; main_full for whole 64-lane blocks.
+  std::vector<Instr> prologue[3], main[3], main_full[3];
 };
 
 namespace {
 
-const Kernel* table_for(SimdLevel l) {
+const Kernel* table_for(SimdLevel l, bool full) {
   switch (l) {
   case SimdLevel::Avx512:
-    return kernels_avx512();
+    return kernels_avx512(full);
   case SimdLevel::Avx2:
-    return kernels_avx2();
+    return kernels_avx2(full);
   default:
-    return kernels_baseline();
+    return kernels_baseline(full);
   }
 }
 
@@ -70,9 +70,10 @@ std::unique_ptr<Executable> Executable::build(const Function& ir, Stage stage, s
   if (!generate_code(ir, stage, impl->code, error)) return nullptr;
   const SimdLevel top = simd_level_supported();
   for (int l = 0; l <= level_index(top); ++l) {
-    const Kernel* t = table_for(static_cast<SimdLevel>(l));
+    const Kernel* t = table_for(static_cast<SimdLevel>(l), false);
     impl->prologue[l] = thread(impl->code.prologue, t);
     impl->main[l] = thread(impl->code.main, t);
+    impl->main_full[l] = thread(impl->code.main, table_for(static_cast<SimdLevel>(l), true));
   }
   std::unique_ptr<Executable> e(new Executable());
   e->impl_ = std::move(impl);
@@ -115,9 +116,9 @@ void Executable::run_vertices(const Prepared& p, const VertexBatch& batch, void*
   rs.sampler = batch.sampler;
   rs.tex = impl_->code.tex.data();
   rs.tmp = reinterpret_cast<float*>(regs + size_t{impl_->code.reg_count} * kRegBytes);
-  const Instr* code = impl_->main[level_index(level)].data();
   for (int base = 0; base < batch.count; base += kBlockLanes) {
     const int lanes = std::min(kBlockLanes, batch.count - base);
+    const Instr* code = (lanes == kBlockLanes ? impl_->main_full : impl_->main)[level_index(level)].data();
     rs.base = base;
     rs.lanes = lanes;
     rs.budget = kRunIterationBudget;
@@ -145,7 +146,7 @@ uint64_t Executable::run_fragments(const Prepared& p, const FragmentQuads& q, vo
   if (lanes == 0) return 0;
   rs.lanes = lanes;
   set_entry(regs, lanes);
-  const Instr* code = impl_->main[level_index(level)].data();
+  const Instr* code = (lanes == kBlockLanes ? impl_->main_full : impl_->main)[level_index(level)].data();
   Frame f{regs, splat_base(p), code, &rs, (lanes + w - 1) / w};
   execute(code, f);
   return rs.kill;

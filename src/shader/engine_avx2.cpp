@@ -27,7 +27,9 @@
 
 namespace pineda::shader {
 
-const Kernel* kernels_avx2() { return make_kernel_table<8>(); }
+const Kernel* kernels_avx2(bool full) {
+  return full ? make_kernel_table<8, true>() : make_kernel_table<8, false>();
+}
 
 } // namespace pineda::shader
 
@@ -40,7 +42,7 @@ const Kernel* kernels_avx2() { return make_kernel_table<8>(); }
 #else
 
 namespace pineda::shader {
-const Kernel* kernels_avx2() { return kernels_baseline(); }
+const Kernel* kernels_avx2(bool full) { return kernels_baseline(full); }
 } // namespace pineda::shader
 
 #endif

@@ -29,7 +29,9 @@
 
 namespace pineda::shader {
 
-const Kernel* kernels_avx512() { return make_kernel_table<16>(); }
+const Kernel* kernels_avx512(bool full) {
+  return full ? make_kernel_table<16, true>() : make_kernel_table<16, false>();
+}
 
 } // namespace pineda::shader
 
@@ -42,7 +44,7 @@ const Kernel* kernels_avx512() { return make_kernel_table<16>(); }
 #else
 
 namespace pineda::shader {
-const Kernel* kernels_avx512() { return kernels_avx2(); }
+const Kernel* kernels_avx512(bool full) { return kernels_avx2(full); }
 } // namespace pineda::shader
 
 #endif

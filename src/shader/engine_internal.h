@@ -116,11 +116,12 @@ struct Frame {
   int nvec; // vectors per register of this run
 };
 
-// The kernel table of each level (nullptr entries: combinations the code generator never
-// emits). Levels the build does not have return the baseline table.
-const Kernel* kernels_baseline();
-const Kernel* kernels_avx2();
-const Kernel* kernels_avx512();
+// The kernel table of each level, for whole 64-lane blocks (`full`: the lane loops have a fixed
+// trip count and are unrolled) or any lane count. Levels the build does not have return the
+// level below's table.
+const Kernel* kernels_baseline(bool full);
+const Kernel* kernels_avx2(bool full);
+const Kernel* kernels_avx512(bool full);
 // Lanes per vector of each level.
 inline int level_width(SimdLevel l) {
   return l == SimdLevel::Avx512 ? 16 : l == SimdLevel::Avx2 ? 8 : 4;

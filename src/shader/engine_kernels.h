@@ -29,7 +29,9 @@ template <int W> inline const typename Vec<W>::F* vsrc(const Frame& f, uint32_t 
 
 // ---- lane-wise operations ----
 
-template <int W, LaneOp op, int K> const Instr* k_lane(const Instr* ip, Frame& f) {
+// NV: the vectors per register when fixed at compile time (whole 64-lane blocks, the loop
+// unrolled), 0 when read from the frame (partial blocks and batches).
+template <int W, LaneOp op, int K, int NV> const Instr* k_lane(const Instr* ip, Frame& f) {
   using F = typename Vec<W>::F;
   using D = typename Vec<W>::D;
   constexpr int n = lane_op_arity(op);
@@ -37,23 +39,26 @@ template <int W, LaneOp op, int K> const Instr* k_lane(const Instr* ip, Frame& f
   const F* a = vsrc<W>(f, ip->a, K & 1);
   const F* b = vsrc<W>(f, ip->b, (K & 2) != 0);
   const F* c = vsrc<W>(f, ip->c, (K & 4) != 0);
-  const int nv = f.nvec;
+  const int nv = NV ? NV : f.nvec;
   if constexpr (n == 1) {
     if constexpr (K & 1) {
       const F r = PINEDA_SIMD_NS::apply_lane_op<op, F, D>(a[0], a[0], a[0]);
       for (int i = 0; i < nv; ++i)
         d[i] = r;
     } else {
+#pragma GCC unroll 16
       for (int i = 0; i < nv; ++i)
         d[i] = PINEDA_SIMD_NS::apply_lane_op<op, F, D>(a[i], a[i], a[i]);
     }
   } else if constexpr (n == 2) {
     const F as = a[0], bs = b[0];
+#pragma GCC unroll 16
     for (int i = 0; i < nv; ++i)
       d[i] = PINEDA_SIMD_NS::apply_lane_op<op, F, D>((K & 1) ? as : a[i], (K & 2) ? bs : b[i],
                                                      F{});
   } else {
     const F as = a[0], bs = b[0], cs = c[0];
+#pragma GCC unroll 16
     for (int i = 0; i < nv; ++i)
       d[i] = PINEDA_SIMD_NS::apply_lane_op<op, F, D>((K & 1) ? as : a[i], (K & 2) ? bs : b[i],
                                                      (K & 4) ? cs : c[i]);
@@ -246,18 +251,20 @@ template <int W> const Instr* k_load_uniform_bool(const Instr* ip, Frame& f) {
 
 // ---- the table ----
 
-template <int W, LaneOp op, int... K>
+template <int W, int NV, LaneOp op, int... K>
 void fill_lane(Kernel* t, std::integer_sequence<int, K...>) {
   constexpr int m = (1 << lane_op_arity(op)) - 1;
-  ((t[static_cast<int>(op) * 8 + K] = &k_lane<W, op, (K & m)>), ...);
+  ((t[static_cast<int>(op) * 8 + K] = &k_lane<W, op, (K & m), NV>), ...);
 }
 
-template <int W> const Kernel* make_kernel_table() {
+// Full: the table for whole blocks (every register 64 lanes).
+template <int W, bool Full> const Kernel* make_kernel_table() {
+  constexpr int NV = Full ? kBlockLanes / W : 0;
   static const auto table = [] {
     struct T {
       Kernel k[kNumKernels];
     } t{};
-#define PINEDA_X(name, n) fill_lane<W, LaneOp::name>(t.k, std::make_integer_sequence<int, 8>{});
+#define PINEDA_X(name, n) fill_lane<W, NV, LaneOp::name>(t.k, std::make_integer_sequence<int, 8>{});
     PINEDA_LANE_OPS(PINEDA_X)
 #undef PINEDA_X
     const auto set = [&](Special s, Kernel k) { t.k[special_kernel(s)] = k; };

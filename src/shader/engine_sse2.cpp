@@ -7,6 +7,8 @@
 
 namespace pineda::shader {
 
-const Kernel* kernels_baseline() { return make_kernel_table<4>(); }
+const Kernel* kernels_baseline(bool full) {
+  return full ? make_kernel_table<4, true>() : make_kernel_table<4, false>();
+}
 
 } // namespace pineda::shader
