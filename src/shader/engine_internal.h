@@ -17,9 +17,38 @@ namespace pineda::shader {
 
 struct Instr;
 struct Frame;
-// A kernel runs one instruction over the frame's lanes and returns the next instruction
-// (nullptr: the end).
+// A kernel runs one instruction over the frame's lanes and continues with the next one.
 using Kernel = const Instr* (*)(const Instr* ip, Frame& f);
+
+// How a kernel continues (PINEDA_NEXT). Threaded: it tail-calls the next kernel, so a program
+// runs as one chain of jumps and returns nullptr from End. Otherwise it returns the next
+// instruction to the dispatch loop (engine.cpp execute), which calls it. A tail call must be
+// guaranteed: an unoptimized call per instruction would grow the stack with every instruction
+// a loop runs. Clang guarantees it with musttail; GCC makes sibling calls in optimized builds,
+// but not always with AddressSanitizer's instrumentation, so those builds use the loop.
+#if defined(__has_cpp_attribute)
+#if __has_cpp_attribute(clang::musttail)
+#define PINEDA_SHADER_THREADED 1
+#define PINEDA_NEXT(next)                                                                       \
+  do {                                                                                          \
+    const Instr* pineda_next_ = (next);                                                         \
+    [[clang::musttail]] return pineda_next_->fn(pineda_next_, f);                               \
+  } while (0)
+#endif
+#endif
+#if !defined(PINEDA_SHADER_THREADED) && defined(__GNUC__) && defined(__OPTIMIZE__) &&          \
+    !defined(__SANITIZE_ADDRESS__) && !defined(__SANITIZE_THREAD__) && !defined(PINEDA_SHADER_LOOP)
+#define PINEDA_SHADER_THREADED 1
+#define PINEDA_NEXT(next)                                                                       \
+  do {                                                                                          \
+    const Instr* pineda_next_ = (next);                                                         \
+    return pineda_next_->fn(pineda_next_, f);                                                   \
+  } while (0)
+#endif
+#if !defined(PINEDA_SHADER_THREADED)
+#define PINEDA_SHADER_THREADED 0
+#define PINEDA_NEXT(next) return (next)
+#endif
 
 // Register operands and results are byte offsets into the frame's registers; splat operands
 // byte offsets into the prepared splats. `aux` is a jump target (instruction index), an input

@@ -63,7 +63,7 @@ template <int W, LaneOp op, int K, int NV> const Instr* k_lane(const Instr* ip, 
       d[i] = PINEDA_SIMD_NS::apply_lane_op<op, F, D>((K & 1) ? as : a[i], (K & 2) ? bs : b[i],
                                                      (K & 4) ? cs : c[i]);
   }
-  return ip + 1;
+  PINEDA_NEXT(ip + 1);
 }
 
 // ---- inputs and outputs ----
@@ -79,7 +79,7 @@ template <int W> const Instr* k_load_input(const Instr* ip, Frame& f) {
     std::memcpy(d, src + rs.base, static_cast<size_t>(n) * 4);
   }
   std::memset(d + n, 0, static_cast<size_t>(total - n) * 4);
-  return ip + 1;
+  PINEDA_NEXT(ip + 1);
 }
 
 template <int W> const Instr* k_load_facing(const Instr* ip, Frame& f) {
@@ -88,7 +88,7 @@ template <int W> const Instr* k_load_facing(const Instr* ip, Frame& f) {
   const I v = I{} + (f.rs->front_facing ? -1 : 0);
   for (int i = 0; i < f.nvec; ++i)
     d[i] = v;
-  return ip + 1;
+  PINEDA_NEXT(ip + 1);
 }
 
 template <int W> const Instr* k_store_output(const Instr* ip, Frame& f) {
@@ -96,7 +96,7 @@ template <int W> const Instr* k_store_output(const Instr* ip, Frame& f) {
   float* dst = rs.out ? rs.out[ip->aux] : nullptr;
   if (dst)
     std::memcpy(dst + rs.base, f.regs + ip->a, static_cast<size_t>(rs.lanes) * 4);
-  return ip + 1;
+  PINEDA_NEXT(ip + 1);
 }
 
 template <int W> const Instr* k_store_kill(const Instr* ip, Frame& f) {
@@ -106,7 +106,7 @@ template <int W> const Instr* k_store_kill(const Instr* ip, Frame& f) {
   for (int l = 0; l < f.rs->lanes; ++l)
     bits |= static_cast<uint64_t>((m[l] & e[l]) != 0) << l;
   f.rs->kill = bits;
-  return ip + 1;
+  PINEDA_NEXT(ip + 1);
 }
 
 // ---- uniform arrays indexed per lane ----
@@ -125,7 +125,7 @@ template <int W, bool Bool> const Instr* k_gather(const Instr* ip, Frame& f) {
     const uint32_t w = u[ip->aux + static_cast<uint32_t>(i) * ip->b];
     d[l] = Bool ? (w != 0 ? -1 : 0) : static_cast<int32_t>(w);
   }
-  return ip + 1;
+  PINEDA_NEXT(ip + 1);
 }
 
 // ---- derivatives: coarse, one value per 2x2 quad ----
@@ -141,7 +141,7 @@ template <int W, bool X> const Instr* k_deriv(const Instr* ip, Frame& f) {
     const float v = X ? a[q + 3] - a[q + 2] : a[q + 2] - a[q];
     d[q] = d[q + 1] = d[q + 2] = d[q + 3] = v;
   }
-  return ip + 1;
+  PINEDA_NEXT(ip + 1);
 }
 
 // ---- texture lookups ----
@@ -178,6 +178,8 @@ template <int W> const Instr* k_tex(const Instr* ip, Frame& f) {
       for (int l = 0; l < total; ++l)
         req.rgba[k][l] = k == 3 ? 1.0f : 0.0f;
   }
+  // Back to the dispatch loop: a tail call is not possible past `req`, whose address the
+  // sampler received.
   return ip + 1;
 }
 
@@ -196,18 +198,18 @@ template <int W> inline bool any_entry(const Frame& f, uint32_t off) {
   return r != 0;
 }
 
-template <int W> const Instr* k_jump(const Instr* ip, Frame& f) { return f.code + ip->aux; }
+template <int W> const Instr* k_jump(const Instr* ip, Frame& f) { PINEDA_NEXT(f.code + ip->aux); }
 template <int W> const Instr* k_jump_if_none(const Instr* ip, Frame& f) {
-  return any_entry<W>(f, ip->a) ? ip + 1 : f.code + ip->aux;
+  PINEDA_NEXT(any_entry<W>(f, ip->a) ? ip + 1 : f.code + ip->aux);
 }
 template <int W> const Instr* k_jump_if_none_s(const Instr* ip, Frame& f) {
   int32_t m;
   std::memcpy(&m, f.splats + ip->a, 4);
-  return m != 0 ? ip + 1 : f.code + ip->aux;
+  PINEDA_NEXT(m != 0 ? ip + 1 : f.code + ip->aux);
 }
 template <int W> const Instr* k_loop_init(const Instr* ip, Frame& f) {
   f.rs->loop_count[ip->aux] = 0;
-  return ip + 1;
+  PINEDA_NEXT(ip + 1);
 }
 // The loop's exit test. A loop ends after kLoopIterationLimit iterations, and every loop of
 // the run once the run's budget is spent, so that no shader hangs the process.
@@ -218,12 +220,12 @@ inline bool loop_continues(Frame& f, uint32_t counter) {
   return true;
 }
 template <int W> const Instr* k_exit_if_none(const Instr* ip, Frame& f) {
-  return any_entry<W>(f, ip->a) && loop_continues(f, ip->c) ? ip + 1 : f.code + ip->aux;
+  PINEDA_NEXT(any_entry<W>(f, ip->a) && loop_continues(f, ip->c) ? ip + 1 : f.code + ip->aux);
 }
 template <int W> const Instr* k_exit_if_none_s(const Instr* ip, Frame& f) {
   int32_t m;
   std::memcpy(&m, f.splats + ip->a, 4);
-  return m != 0 && loop_continues(f, ip->c) ? ip + 1 : f.code + ip->aux;
+  PINEDA_NEXT(m != 0 && loop_continues(f, ip->c) ? ip + 1 : f.code + ip->aux);
 }
 template <int W> const Instr* k_end(const Instr*, Frame&) { return nullptr; }
 
@@ -238,15 +240,15 @@ template <int W> inline void fill_bits(Frame& f, uint32_t off, uint32_t bits) {
 }
 template <int W> const Instr* k_load_const(const Instr* ip, Frame& f) {
   fill_bits<W>(f, ip->d, ip->aux);
-  return ip + 1;
+  PINEDA_NEXT(ip + 1);
 }
 template <int W> const Instr* k_load_uniform(const Instr* ip, Frame& f) {
   fill_bits<W>(f, ip->d, f.rs->uniforms[ip->aux]);
-  return ip + 1;
+  PINEDA_NEXT(ip + 1);
 }
 template <int W> const Instr* k_load_uniform_bool(const Instr* ip, Frame& f) {
   fill_bits<W>(f, ip->d, f.rs->uniforms[ip->aux] != 0 ? ~0u : 0u);
-  return ip + 1;
+  PINEDA_NEXT(ip + 1);
 }
 
 // ---- the table ----
