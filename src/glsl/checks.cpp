@@ -23,7 +23,7 @@ const TIntermSymbol* root_symbol(TIntermTyped* t) {
 
 // Records the names of the variables the shader's code assigns (statically: dead code too).
 class Assigned : public TIntermTraverser {
- public:
+public:
   std::map<std::string, TSourceLoc> names;
 
   bool visitBinary(TVisit, TIntermBinary* n) override {
@@ -35,7 +35,7 @@ class Assigned : public TIntermTraverser {
     return true;
   }
 
- private:
+private:
   void note(TIntermTyped* t, const TSourceLoc& loc) {
     if (const TIntermSymbol* s = root_symbol(t)) names.emplace(s->getName().c_str(), loc);
   }
@@ -51,7 +51,7 @@ bool contains_sampler(const TType& t) {
 
 // The largest gl_TexCoord[] the shader declares or implies by its constant indices.
 class TexCoordSize : public TIntermTraverser {
- public:
+public:
   int size = 0;
   TSourceLoc loc{};
   void visitSymbol(TIntermSymbol* s) override {
@@ -149,8 +149,8 @@ void check_stage_globals(const std::vector<const TIntermediate*>& shaders, std::
         init.constant = true;
         const TConstUnionArray& arr = c->getConstArray();
         for (int k = 0; k < arr.size(); ++k)
-          init.value += std::to_string(arr[k].getDConst()) + "," +
-                        std::to_string(arr[k].getIConst()) + ";";
+          init.value +=
+              std::to_string(arr[k].getDConst()) + "," + std::to_string(arr[k].getIConst()) + ";";
       }
       const std::string name = s->getName().c_str();
       auto it = seen.find(name);

@@ -19,9 +19,15 @@ namespace pineda::glsl {
 
 namespace {
 
-bool ident_start(char c) { return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || c == '_'; }
-bool ident_char(char c) { return ident_start(c) || (c >= '0' && c <= '9'); }
-bool digit(char c) { return c >= '0' && c <= '9'; }
+bool ident_start(char c) {
+  return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || c == '_';
+}
+bool ident_char(char c) {
+  return ident_start(c) || (c >= '0' && c <= '9');
+}
+bool digit(char c) {
+  return c >= '0' && c <= '9';
+}
 
 // Every literal of `e` made to depend on a uniform that is zero, so that glslang folds
 // nothing and the whole expression reaches Pineda's IR.
@@ -50,8 +56,9 @@ std::string hide_literals(const std::string& e) {
         while (j < e.size() && std::isxdigit(static_cast<unsigned char>(e[j])))
           ++j;
       } else {
-        while (j < e.size() && (digit(e[j]) || e[j] == '.' || e[j] == 'e' || e[j] == 'E' ||
-                                ((e[j] == '+' || e[j] == '-') && (e[j - 1] == 'e' || e[j - 1] == 'E')))) {
+        while (j < e.size() &&
+               (digit(e[j]) || e[j] == '.' || e[j] == 'e' || e[j] == 'E' ||
+                ((e[j] == '+' || e[j] == '-') && (e[j - 1] == 'e' || e[j - 1] == 'E')))) {
           is_float = is_float || e[j] == '.' || e[j] == 'e' || e[j] == 'E';
           ++j;
         }
@@ -94,13 +101,14 @@ bool evaluate_constant(const std::string& type, const std::string& expr, int ver
       return false;
     }
   }
-  const std::string src = "#version " + std::to_string(version) +
-                          "\nuniform float pineda_zero;\n" + prelude + type + " pineda_value;\n" +
-                          "void main() { pineda_value = (" + hide_literals(expr) + "); }\n";
+  const std::string src = "#version " + std::to_string(version) + "\nuniform float pineda_zero;\n" +
+                          prelude + type + " pineda_value;\n" + "void main() { pineda_value = (" +
+                          hide_literals(expr) + "); }\n";
   glslang::TShader sh(EShLangFragment);
   const char* s = src.c_str();
   sh.setStrings(&s, 1);
-  if (!sh.parse(GetDefaultResources(), version, ENoProfile, false, false, EShMsgDefault)) return false;
+  if (!sh.parse(GetDefaultResources(), version, ENoProfile, false, false, EShMsgDefault))
+    return false;
   glslang::TProgram prog;
   prog.addShader(&sh);
   if (!prog.link(EShMsgDefault)) return false;

@@ -46,7 +46,7 @@ struct Limits {
 };
 
 class Shader {
- public:
+public:
   // Compiles the concatenation of `strings` (glShaderSource's strings, GLSL 1.10 §3.2: the log
   // names them by index). Always returns a shader; compiled() says whether it compiled.
   static std::shared_ptr<Shader> compile(ShaderStage stage, const std::vector<std::string>& strings,
@@ -60,7 +60,7 @@ class Shader {
   struct Impl;
   Impl* impl() const { return impl_.get(); }
 
- private:
+private:
   Shader() = default;
   ShaderStage stage_ = ShaderStage::Vertex;
   bool compiled_ = false;
@@ -111,7 +111,7 @@ struct AttribBinding {
 struct ProgramImpl;
 
 class Program {
- public:
+public:
   // Links the shaders (any mix of compiled vertex and fragment shaders; none links to a
   // program without executables, which leaves both stages to fixed function). `bindings` are
   // glBindAttribLocation's. Always returns a program; linked() says whether it linked.
@@ -152,7 +152,7 @@ class Program {
   // The optimized IR of each stage, for PINEDA_DEBUG=ir.
   const std::string& ir_text() const;
 
- private:
+private:
   Program() = default;
   bool linked_ = false;
   std::string log_;

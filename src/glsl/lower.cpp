@@ -106,8 +106,12 @@ ValueId Lowerer::op(Op o, Type t, ValueId a, ValueId b, ValueId c) {
 }
 
 namespace {
-bool is_true(const Function& f, ValueId v) { return f.is_const(v) && f.const_bits(v) != 0; }
-bool is_false(const Function& f, ValueId v) { return f.is_const(v) && f.const_bits(v) == 0; }
+bool is_true(const Function& f, ValueId v) {
+  return f.is_const(v) && f.const_bits(v) != 0;
+}
+bool is_false(const Function& f, ValueId v) {
+  return f.is_const(v) && f.const_bits(v) == 0;
+}
 } // namespace
 
 ValueId Lowerer::and_(ValueId a, ValueId b) {
@@ -131,7 +135,9 @@ ValueId Lowerer::select(ValueId c, ValueId a, ValueId b) {
   if (is_false(f, c)) return b;
   return op(Op::Select, f.type(a), c, a, b);
 }
-ValueId Lowerer::active_value() { return active == kNoValue ? f.const_b(true) : active; }
+ValueId Lowerer::active_value() {
+  return active == kNoValue ? f.const_b(true) : active;
+}
 
 bool Lowerer::is_uniform(ValueId v) {
   if (v == kNoValue || is_sampler(v)) return true;
@@ -194,8 +200,7 @@ bool Lowerer::side_effects(TIntermNode* n) {
 void Lowerer::prescan_locals(TIntermNode* n) {
   if (!n) return;
   if (auto* s = n->getAsSymbolNode()) {
-    if (is_local_storage(s->getQualifier().storage) && s->getBasicType() != EbtVoid)
-      var(s);
+    if (is_local_storage(s->getQualifier().storage) && s->getBasicType() != EbtVoid) var(s);
     return;
   }
   children(n, [&](TIntermNode* c) { prescan_locals(c); });
@@ -620,7 +625,8 @@ Comps Lowerer::call(TIntermAggregate* a) {
     return zeros;
   }
   // GLSL 1.10 §6.1: recursion is not allowed (glslang does not check it for desktop GLSL).
-  if (std::find(call_stack.begin(), call_stack.end(), name) != call_stack.end() || fns.size() > 256) {
+  if (std::find(call_stack.begin(), call_stack.end(), name) != call_stack.end() ||
+      fns.size() > 256) {
     fail("function " + name.substr(0, name.find('(')) + " calls itself (recursion)");
     return zeros;
   }
@@ -737,14 +743,16 @@ bool Lowerer::run() {
       if (!s) continue;
       const TStorageQualifier q = s->getQualifier().storage;
       // A global is an output only for the constant evaluator (const_eval.cpp).
-      if (q == EvqGlobal) zero_var(s->getName().c_str(), s->getType(), lenv.output(s->getName().c_str(), 0) >= 0);
+      if (q == EvqGlobal)
+        zero_var(s->getName().c_str(), s->getType(), lenv.output(s->getName().c_str(), 0) >= 0);
       if (q == EvqVaryingOut) zero_var(s->getName().c_str(), s->getType(), true);
     }
   }
   const auto builtin_out = [&](const char* name, int comps) {
     if (env.count(name)) {
       outputs.insert(name);
-      if (static_cast<int>(env[name].size()) < comps) env[name].resize(static_cast<size_t>(comps), f.const_f(0.0f));
+      if (static_cast<int>(env[name].size()) < comps)
+        env[name].resize(static_cast<size_t>(comps), f.const_f(0.0f));
       return;
     }
     env[name] = Comps(static_cast<size_t>(comps), f.const_f(0.0f));

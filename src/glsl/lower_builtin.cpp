@@ -10,7 +10,9 @@ using namespace glslang;
 
 namespace {
 
-ValueId at(const Comps& c, size_t k) { return c.size() == 1 ? c[0] : c[k]; }
+ValueId at(const Comps& c, size_t k) {
+  return c.size() == 1 ? c[0] : c[k];
+}
 
 } // namespace
 
@@ -37,8 +39,8 @@ Comps Lowerer::builtin(TOperator o, const std::vector<TIntermTyped*>& args, cons
   const auto fl2 = [&](Op x) {
     const size_t n = std::max(a[0].size(), a[1].size());
     Comps out(n);
-    const bool compare = x == Op::Lt || x == Op::Le || x == Op::Gt || x == Op::Ge ||
-                         x == Op::Eq || x == Op::Ne;
+    const bool compare =
+        x == Op::Lt || x == Op::Le || x == Op::Gt || x == Op::Ge || x == Op::Eq || x == Op::Ne;
     for (size_t k = 0; k < n; ++k)
       out[k] = op(x, compare ? Type::Bool : f.type(at(a[0], k)), at(a[0], k), at(a[1], k));
     return out;
@@ -144,8 +146,8 @@ Comps Lowerer::builtin(TOperator o, const std::vector<TIntermTyped*>& args, cons
       ValueId t = op(Op::Div, Type::Float, op(Op::Sub, Type::Float, a[2][k], e0),
                      op(Op::Sub, Type::Float, e1, e0));
       t = op(Op::Min, Type::Float, op(Op::Max, Type::Float, t, zero), one);
-      const ValueId p = op(Op::Sub, Type::Float, f.const_f(3.0f),
-                           op(Op::Mul, Type::Float, f.const_f(2.0f), t));
+      const ValueId p =
+          op(Op::Sub, Type::Float, f.const_f(3.0f), op(Op::Mul, Type::Float, f.const_f(2.0f), t));
       out[k] = op(Op::Mul, Type::Float, op(Op::Mul, Type::Float, t, t), p);
     }
     return out;
@@ -216,8 +218,8 @@ Comps Lowerer::builtin(TOperator o, const std::vector<TIntermTyped*>& args, cons
                          op(Op::Mul, Type::Float, op(Op::Mul, Type::Float, eta, eta),
                             op(Op::Sub, Type::Float, one, op(Op::Mul, Type::Float, d, d))));
     const ValueId tir = op(Op::Lt, Type::Bool, k, zero);
-    const ValueId s = op(Op::Add, Type::Float, op(Op::Mul, Type::Float, eta, d),
-                         op(Op::Sqrt, Type::Float, k));
+    const ValueId s =
+        op(Op::Add, Type::Float, op(Op::Mul, Type::Float, eta, d), op(Op::Sqrt, Type::Float, k));
     Comps out = a[0];
     for (size_t i = 0; i < out.size(); ++i) {
       const ValueId r = op(Op::Sub, Type::Float, op(Op::Mul, Type::Float, eta, a[0][i]),

@@ -308,12 +308,13 @@ Comps Lowerer::load(const Ref& r) {
         out[static_cast<size_t>(k)] = f.uniform(t, word);
       } else if (r.dyn.size() == 1) {
         ValueId idx = r.dyn[0].index;
-        out[static_cast<size_t>(k)] = f.emit_imm(*cur, Op::UniformIndexed, t, word,
-                                                 r.dyn[0].stride, r.dyn[0].count, idx);
+        out[static_cast<size_t>(k)] =
+            f.emit_imm(*cur, Op::UniformIndexed, t, word, r.dyn[0].stride, r.dyn[0].count, idx);
       } else {
         int extent = 1;
         const ValueId offset = dyn_offset_value(*this, r, extent);
-        out[static_cast<size_t>(k)] = f.emit_imm(*cur, Op::UniformIndexed, t, word, 1, extent, offset);
+        out[static_cast<size_t>(k)] =
+            f.emit_imm(*cur, Op::UniformIndexed, t, word, 1, extent, offset);
       }
     }
     return out;
@@ -358,8 +359,9 @@ void Lowerer::store(const Ref& r, const Comps& v) {
   Comps cv = v;
   for (int k = 0; k < n && k < static_cast<int>(cv.size()); ++k) {
     const size_t at = static_cast<size_t>(r.comp(k));
-    if (at < r.root_types.size() && r.root_types[at] != kSamplerType && !is_sampler(cv[static_cast<size_t>(k)]) &&
-        cv[static_cast<size_t>(k)] != kNoValue && f.type(cv[static_cast<size_t>(k)]) != r.root_types[at])
+    if (at < r.root_types.size() && r.root_types[at] != kSamplerType &&
+        !is_sampler(cv[static_cast<size_t>(k)]) && cv[static_cast<size_t>(k)] != kNoValue &&
+        f.type(cv[static_cast<size_t>(k)]) != r.root_types[at])
       cv[static_cast<size_t>(k)] = convert(cv[static_cast<size_t>(k)], r.root_types[at]);
   }
   if (r.dyn.empty()) {
@@ -400,7 +402,8 @@ Comps Lowerer::componentwise(Op o, Type t, const Comps& a, const Comps& b) {
 
 Comps Lowerer::expr(TIntermTyped* n) {
   if (!n) return {};
-  if (++lowered_nodes > kMaxLoweredNodes) fail("the program is too large once its functions are inlined");
+  if (++lowered_nodes > kMaxLoweredNodes)
+    fail("the program is too large once its functions are inlined");
   if (!result.error.empty()) {
     std::vector<Type> ts;
     flat_types(n->getType(), ts);
@@ -497,8 +500,8 @@ Comps Lowerer::binary(TIntermBinary* b) {
   }
 }
 
-Comps Lowerer::arith(TOperator o, const TType& lt, const Comps& l, const TType& rt,
-                     const Comps& r, const TType& result_type) {
+Comps Lowerer::arith(TOperator o, const TType& lt, const Comps& l, const TType& rt, const Comps& r,
+                     const TType& result_type) {
   const Type et = ir_type(lt.getBasicType());
   switch (o) {
   case EOpAdd:
@@ -531,8 +534,8 @@ Comps Lowerer::arith(TOperator o, const TType& lt, const Comps& l, const TType& 
     for (int row = 0; row < rows; ++row) {
       ValueId acc = kNoValue;
       for (int c = 0; c < cols; ++c) {
-        const ValueId p =
-            op(Op::Mul, Type::Float, l[static_cast<size_t>(c * rows + row)], r[static_cast<size_t>(c)]);
+        const ValueId p = op(Op::Mul, Type::Float, l[static_cast<size_t>(c * rows + row)],
+                             r[static_cast<size_t>(c)]);
         acc = acc == kNoValue ? p : op(Op::Add, Type::Float, acc, p);
       }
       out[static_cast<size_t>(row)] = acc;
@@ -545,8 +548,8 @@ Comps Lowerer::arith(TOperator o, const TType& lt, const Comps& l, const TType& 
     for (int c = 0; c < cols; ++c) {
       ValueId acc = kNoValue;
       for (int row = 0; row < rows; ++row) {
-        const ValueId p =
-            op(Op::Mul, Type::Float, l[static_cast<size_t>(row)], r[static_cast<size_t>(c * rows + row)]);
+        const ValueId p = op(Op::Mul, Type::Float, l[static_cast<size_t>(row)],
+                             r[static_cast<size_t>(c * rows + row)]);
         acc = acc == kNoValue ? p : op(Op::Add, Type::Float, acc, p);
       }
       out[static_cast<size_t>(c)] = acc;
@@ -735,9 +738,9 @@ Comps Lowerer::construct(TIntermAggregate* a) {
       const int sc = first->getType().getMatrixCols(), sr = first->getType().getMatrixRows();
       for (int c = 0; c < cols; ++c)
         for (int r = 0; r < rows; ++r)
-          out[static_cast<size_t>(c * rows + r)] =
-              c < sc && r < sr ? all[static_cast<size_t>(c * sr + r)]
-                               : f.const_f(c == r ? 1.0f : 0.0f);
+          out[static_cast<size_t>(c * rows + r)] = c < sc && r < sr
+                                                       ? all[static_cast<size_t>(c * sr + r)]
+                                                       : f.const_f(c == r ? 1.0f : 0.0f);
       return out;
     }
   }

@@ -33,7 +33,9 @@ using Comps = std::vector<ValueId>;
 // Sampler values are not IR values: a component holding kSamplerTag | word names the uniform
 // word that holds the sampler's texture unit.
 constexpr uint32_t kSamplerTag = 0x40000000u;
-inline bool is_sampler(ValueId v) { return v != kNoValue && (v & 0xC0000000u) == kSamplerTag; }
+inline bool is_sampler(ValueId v) {
+  return v != kNoValue && (v & 0xC0000000u) == kSamplerTag;
+}
 
 // Flattened component types of a GLSL type; samplers are kSamplerType (never an IR type).
 constexpr Type kSamplerType = static_cast<Type>(3);
@@ -47,8 +49,8 @@ Type ir_type(glslang::TBasicType b);
 struct Ref {
   bool uniform = false;
   int uniform_base = 0;
-  std::string key;      // env key when the root is a writable variable
-  Comps root;           // the root's values (not uniform)
+  std::string key; // env key when the root is a writable variable
+  Comps root;      // the root's values (not uniform)
   std::vector<Type> root_types;
   int base = 0;
   struct Dyn {
@@ -65,9 +67,9 @@ struct Ref {
 };
 
 class Lowerer {
- public:
-  Lowerer(const glslang::TIntermediate& ast, shader::Stage stage, const LowerEnv& env,
-          Function& f, LowerResult& result);
+public:
+  Lowerer(const glslang::TIntermediate& ast, shader::Stage stage, const LowerEnv& env, Function& f,
+          LowerResult& result);
   bool run();
 
   // ---- emission (lower.cpp) ----

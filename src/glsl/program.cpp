@@ -241,17 +241,39 @@ bool debug_ir_raw() {
 
 Program::~Program() = default;
 
-const std::vector<ActiveUniform>& Program::uniforms() const { return impl_->uniforms; }
-const std::vector<UniformLocation>& Program::locations() const { return impl_->locations; }
-const std::vector<ActiveAttrib>& Program::attribs() const { return impl_->attribs; }
-int Program::uniform_words() const { return impl_->uniform_words; }
-const std::vector<uint32_t>& Program::initial_uniforms() const { return impl_->initial; }
-const std::vector<BuiltinUniform>& Program::builtin_uniforms() const { return impl_->builtins; }
-const shader::Executable* Program::vertex() const { return impl_->vs.get(); }
-const shader::Executable* Program::fragment() const { return impl_->fs.get(); }
-bool Program::writes_frag_color() const { return impl_->frag_color; }
-bool Program::writes_frag_depth() const { return impl_->frag_depth; }
-const std::string& Program::ir_text() const { return impl_->ir; }
+const std::vector<ActiveUniform>& Program::uniforms() const {
+  return impl_->uniforms;
+}
+const std::vector<UniformLocation>& Program::locations() const {
+  return impl_->locations;
+}
+const std::vector<ActiveAttrib>& Program::attribs() const {
+  return impl_->attribs;
+}
+int Program::uniform_words() const {
+  return impl_->uniform_words;
+}
+const std::vector<uint32_t>& Program::initial_uniforms() const {
+  return impl_->initial;
+}
+const std::vector<BuiltinUniform>& Program::builtin_uniforms() const {
+  return impl_->builtins;
+}
+const shader::Executable* Program::vertex() const {
+  return impl_->vs.get();
+}
+const shader::Executable* Program::fragment() const {
+  return impl_->fs.get();
+}
+bool Program::writes_frag_color() const {
+  return impl_->frag_color;
+}
+bool Program::writes_frag_depth() const {
+  return impl_->frag_depth;
+}
+const std::string& Program::ir_text() const {
+  return impl_->ir;
+}
 
 int Program::varying_component(const std::string& name, int comp) const {
   auto it = impl_->packed.find({name, comp});
@@ -290,8 +312,8 @@ int Program::uniform_location(std::string_view name) const {
   }
   for (const ActiveUniform& u : impl_->uniforms) {
     if (u.location < 0) continue;
-    const std::string_view un = u.array ? std::string_view(u.name).substr(0, u.name.size() - 3)
-                                        : std::string_view(u.name);
+    const std::string_view un =
+        u.array ? std::string_view(u.name).substr(0, u.name.size() - 3) : std::string_view(u.name);
     if (un != base) continue;
     if (indexed && !u.array) return -1;
     if (index >= u.size) return -1;
@@ -323,7 +345,8 @@ std::unique_ptr<Program> Program::link(const std::vector<std::shared_ptr<const S
   std::vector<Shader::Impl*> stage_shaders[2];
   for (const auto& s : shaders) {
     if (!s) continue;
-    if (!s->compiled()) return fail("ERROR: Linking: a shader attached to the program did not compile");
+    if (!s->compiled())
+      return fail("ERROR: Linking: a shader attached to the program did not compile");
     stage_shaders[s->stage() == ShaderStage::Vertex ? 0 : 1].push_back(s->impl());
   }
   if (stage_shaders[0].empty() && stage_shaders[1].empty()) {
@@ -360,12 +383,17 @@ std::unique_ptr<Program> Program::link(const std::vector<std::shared_ptr<const S
       // A call to a function without a body is an error only if the call can run: the
       // lowering reports it then (glslang reports it even in dead code, which GLSL allows).
       const std::string info = progs[st].getInfoLog();
-      bool only_missing_bodies = info.find("No function definition (body) found") != std::string::npos;
-      for (size_t pos = 0; only_missing_bodies && (pos = info.find("ERROR:", pos)) != std::string::npos; ++pos) {
+      bool only_missing_bodies =
+          info.find("No function definition (body) found") != std::string::npos;
+      for (size_t pos = 0;
+           only_missing_bodies && (pos = info.find("ERROR:", pos)) != std::string::npos; ++pos) {
         const size_t eol = info.find('\n', pos);
-        only_missing_bodies = info.substr(pos, eol - pos).find("No function definition (body) found") != std::string::npos;
+        only_missing_bodies =
+            info.substr(pos, eol - pos).find("No function definition (body) found") !=
+            std::string::npos;
       }
-      if (!only_missing_bodies || !progs[st].getIntermediate(st == 0 ? EShLangVertex : EShLangFragment))
+      if (!only_missing_bodies ||
+          !progs[st].getIntermediate(st == 0 ? EShLangVertex : EShLangFragment))
         return fail(info);
     }
     asts[st] = progs[st].getIntermediate(st == 0 ? EShLangVertex : EShLangFragment);
@@ -379,14 +407,17 @@ std::unique_ptr<Program> Program::link(const std::vector<std::shared_ptr<const S
     for (const Decl& v : vs_decls) {
       if (f.name != v.name) continue;
       if (f.storage == EvqUniform && v.storage == EvqUniform && !same_type(*f.type, *v.type))
-        return fail("ERROR: Linking: uniform '" + f.name + "' has different types in the vertex and fragment shaders");
+        return fail("ERROR: Linking: uniform '" + f.name +
+                    "' has different types in the vertex and fragment shaders");
       if (f.storage == EvqUniform && v.storage == EvqUniform && f.sym->getConstArray().size() > 0 &&
           v.sym->getConstArray().size() > 0 && !(f.sym->getConstArray() == v.sym->getConstArray()))
-        return fail("ERROR: Linking: uniform '" + f.name + "' has different initializers in the vertex and fragment shaders");
+        return fail("ERROR: Linking: uniform '" + f.name +
+                    "' has different initializers in the vertex and fragment shaders");
       // (gl_TexCoord may have different sizes in the two stages, GLSL 1.10 §7.6.)
       if (f.storage == EvqVaryingIn && v.storage == EvqVaryingOut && f.name.rfind("gl_", 0) != 0 &&
           !same_type(*f.type, *v.type))
-        return fail("ERROR: Linking: varying '" + f.name + "' has different types in the vertex and fragment shaders");
+        return fail("ERROR: Linking: varying '" + f.name +
+                    "' has different types in the vertex and fragment shaders");
     }
   }
 
@@ -407,7 +438,10 @@ std::unique_ptr<Program> Program::link(const std::vector<std::shared_ptr<const S
       using namespace shader;
       if (n == "gl_Color") return c < 4 ? kFragColor * 4 + c : -1;
       if (n == "gl_SecondaryColor") return c < 4 ? kFragSecondaryColor * 4 + c : -1;
-      if (n == "gl_TexCoord") return c < 4 * limits.max_texture_coords && c < 4 * kMaxTextureCoords ? kFragTexCoord0 * 4 + c : -1;
+      if (n == "gl_TexCoord")
+        return c < 4 * limits.max_texture_coords && c < 4 * kMaxTextureCoords
+                   ? kFragTexCoord0 * 4 + c
+                   : -1;
       if (n == "gl_FogFragCoord") return c == 0 ? kFragFogFragCoord * 4 : -1;
       if (n == "gl_FragCoord") return c < 4 ? kFragCoord * 4 + c : -1;
       if (n == "gl_PointCoord") return c < 2 ? kFragPointCoord * 4 + c : -1;
@@ -421,13 +455,17 @@ std::unique_ptr<Program> Program::link(const std::vector<std::shared_ptr<const S
     env.output = [&](const std::string& n, int c) -> int {
       using namespace shader;
       if (n == "gl_FragColor") return c < 4 ? kOutFragData0 * 4 + c : -1;
-      if (n == "gl_FragData") return c < 4 * limits.max_draw_buffers && c < 4 * kMaxDrawBuffers ? kOutFragData0 * 4 + c : -1;
+      if (n == "gl_FragData")
+        return c < 4 * limits.max_draw_buffers && c < 4 * kMaxDrawBuffers ? kOutFragData0 * 4 + c
+                                                                          : -1;
       if (n == "gl_FragDepth") return c == 0 ? kOutFragDepth * 4 : -1;
       return -1;
     };
     if (!lower_stage(*fs_ast, shader::Stage::Fragment, env, fs_ir, fs_res))
       return fail("ERROR: Linking fragment shader: " + fs_res.error);
-    if (debug_ir_raw()) std::fprintf(stderr, "fragment shader IR before optimization:\n%s", shader::print(fs_ir).c_str());
+    if (debug_ir_raw())
+      std::fprintf(stderr, "fragment shader IR before optimization:\n%s",
+                   shader::print(fs_ir).c_str());
     shader::optimize(fs_ir);
     impl.frag_color = fs_res.written.count("gl_FragColor") > 0;
     impl.frag_depth = fs_res.written.count("gl_FragDepth") > 0;
@@ -487,7 +525,8 @@ std::unique_ptr<Program> Program::link(const std::vector<std::shared_ptr<const S
       if (n == "gl_Color") return c < 4 ? kInColor * 4 + c : -1;
       if (n == "gl_SecondaryColor") return c < 4 ? kInSecondaryColor * 4 + c : -1;
       if (n == "gl_FogCoord") return c == 0 ? kInFogCoord * 4 : -1;
-      if (const int t = slot_of_multitexcoord(n); t >= 0) return c < 4 ? (kInMultiTexCoord0 + t) * 4 + c : -1;
+      if (const int t = slot_of_multitexcoord(n); t >= 0)
+        return c < 4 ? (kInMultiTexCoord0 + t) * 4 + c : -1;
       if (n.rfind("gl_", 0) == 0 || c >= kProvisionalStride) return -1;
       auto it = std::find(attr_names.begin(), attr_names.end(), n);
       if (it == attr_names.end()) return -1;
@@ -504,7 +543,9 @@ std::unique_ptr<Program> Program::link(const std::vector<std::shared_ptr<const S
       }
       if (n == "gl_FrontSecondaryColor" || n == "gl_BackSecondaryColor") {
         if (c >= 4 || !fs_reads_comp(kFragSecondaryColor * 4 + c)) return -1;
-        return (n == "gl_FrontSecondaryColor" ? kOutFrontSecondaryColor : kOutBackSecondaryColor) * 4 + c;
+        return (n == "gl_FrontSecondaryColor" ? kOutFrontSecondaryColor : kOutBackSecondaryColor) *
+                   4 +
+               c;
       }
       if (n == "gl_TexCoord") {
         if (c >= 4 * kMaxTextureCoords || c >= 4 * limits.max_texture_coords ||
@@ -512,13 +553,16 @@ std::unique_ptr<Program> Program::link(const std::vector<std::shared_ptr<const S
           return -1;
         return kOutTexCoord0 * 4 + c;
       }
-      if (n == "gl_FogFragCoord") return c == 0 && fs_reads_comp(kFragFogFragCoord * 4) ? kOutFogFragCoord * 4 : -1;
+      if (n == "gl_FogFragCoord")
+        return c == 0 && fs_reads_comp(kFragFogFragCoord * 4) ? kOutFogFragCoord * 4 : -1;
       auto it = packed.find({n, c});
       return it == packed.end() ? -1 : kOutVarying0 * 4 + it->second;
     };
     if (!lower_stage(*vs_ast, shader::Stage::Vertex, env, vs_ir, vs_res))
       return fail("ERROR: Linking vertex shader: " + vs_res.error);
-    if (debug_ir_raw()) std::fprintf(stderr, "vertex shader IR before optimization:\n%s", shader::print(vs_ir).c_str());
+    if (debug_ir_raw())
+      std::fprintf(stderr, "vertex shader IR before optimization:\n%s",
+                   shader::print(vs_ir).c_str());
     shader::optimize(vs_ir);
     // GLSL 1.10 §7.1: "The variable gl_Position is available only in the vertex language and
     // is intended for writing the homogeneous vertex position. All executions of a
@@ -558,7 +602,8 @@ std::unique_ptr<Program> Program::link(const std::vector<std::shared_ptr<const S
         if (b.name == attr_names[i]) loc[i] = b.location;
       if (loc[i] < 0) continue;
       if (loc[i] + columns(i) > limits.max_vertex_attribs)
-        return fail("ERROR: Linking: attribute '" + attr_names[i] + "' is bound beyond the last generic attribute");
+        return fail("ERROR: Linking: attribute '" + attr_names[i] +
+                    "' is bound beyond the last generic attribute");
       for (int c = 0; c < columns(i); ++c)
         taken[static_cast<size_t>(loc[i] + c)] = 1;
     }
@@ -611,8 +656,9 @@ std::unique_ptr<Program> Program::link(const std::vector<std::shared_ptr<const S
     return fail("ERROR: Linking: the vertex shader reads more uniform components than the limit (" +
                 std::to_string(limits.max_vertex_uniform_components) + ")");
   if (count_read(read_fs) > limits.max_fragment_uniform_components)
-    return fail("ERROR: Linking: the fragment shader reads more uniform components than the limit (" +
-                std::to_string(limits.max_fragment_uniform_components) + ")");
+    return fail(
+        "ERROR: Linking: the fragment shader reads more uniform components than the limit (" +
+        std::to_string(limits.max_fragment_uniform_components) + ")");
 
   // ---- executables ----
   std::string err;
@@ -628,8 +674,10 @@ std::unique_ptr<Program> Program::link(const std::vector<std::shared_ptr<const S
   const size_t vs_samplers = impl.vs ? impl.vs->sampler_words().size() : 0;
   const size_t fs_samplers = impl.fs ? impl.fs->sampler_words().size() : 0;
   std::set<int> all_samplers;
-  if (impl.vs) all_samplers.insert(impl.vs->sampler_words().begin(), impl.vs->sampler_words().end());
-  if (impl.fs) all_samplers.insert(impl.fs->sampler_words().begin(), impl.fs->sampler_words().end());
+  if (impl.vs)
+    all_samplers.insert(impl.vs->sampler_words().begin(), impl.vs->sampler_words().end());
+  if (impl.fs)
+    all_samplers.insert(impl.fs->sampler_words().begin(), impl.fs->sampler_words().end());
   if (static_cast<int>(vs_samplers) > limits.max_vertex_texture_image_units ||
       static_cast<int>(fs_samplers) > limits.max_texture_image_units ||
       static_cast<int>(all_samplers.size()) > limits.max_combined_texture_image_units)
@@ -642,7 +690,8 @@ std::unique_ptr<Program> Program::link(const std::vector<std::shared_ptr<const S
   // ---- uniforms: initial values (GLSL 1.20 §4.3.5) and reflection ----
   for (const std::vector<Decl>* decls : {&vs_decls, &fs_decls})
     for (const Decl& d : *decls)
-      if (d.storage == EvqUniform && d.sym->getConstArray().size() > 0) layout.word_of(d.name, *d.type);
+      if (d.storage == EvqUniform && d.sym->getConstArray().size() > 0)
+        layout.word_of(d.name, *d.type);
   impl.uniform_words = layout.words;
   impl.initial.assign(static_cast<size_t>(layout.words), 0);
   for (const std::vector<Decl>* decls : {&vs_decls, &fs_decls})
@@ -691,8 +740,8 @@ std::unique_ptr<Program> Program::link(const std::vector<std::shared_ptr<const S
     } else {
       u.location = static_cast<int>(impl.locations.size());
       for (int e = 0; e < size; ++e)
-        impl.locations.push_back({static_cast<int>(impl.uniforms.size()), e,
-                                  leaf.word + e * leaf.elem_words});
+        impl.locations.push_back(
+            {static_cast<int>(impl.uniforms.size()), e, leaf.word + e * leaf.elem_words});
     }
     impl.uniforms.push_back(u);
   }

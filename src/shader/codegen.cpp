@@ -55,7 +55,7 @@ struct Gen {
   std::vector<uint8_t> needed_splat;
   std::vector<int32_t> slot;
   std::vector<int> uses;
-  std::vector<uint8_t> fused; // Mul or Max folded into its single user
+  std::vector<uint8_t> fused;     // Mul or Max folded into its single user
   std::vector<const Block*> home; // the block each instruction is in
   std::vector<uint8_t> input_used;
   std::unordered_map<ValueId, std::vector<ValueId>> tex_comps;
@@ -127,8 +127,7 @@ struct Gen {
         if (cls[n.index] != Class::Reg) continue;
         const auto single = [&](ValueId v, Op op) {
           return v != kNoValue && cls[v] == Class::Reg && f.insts[v].op == op &&
-                 f.type(v) == Type::Float && uses[v] == 1 && !fused[v] &&
-                 home[v] == home[n.index];
+                 f.type(v) == Type::Float && uses[v] == 1 && !fused[v] && home[v] == home[n.index];
         };
         if (in.op == Op::Add && in.type == Type::Float) {
           if (single(in.arg[0], Op::Mul))
@@ -188,8 +187,8 @@ struct Gen {
         p.kernel = special_kernel(Special::LoadConst);
         p.aux = static_cast<uint32_t>(in.imm[0]);
       } else if (in.op == Op::Uniform) {
-        p.kernel = special_kernel(in.type == Type::Bool ? Special::LoadUniformBool
-                                                         : Special::LoadUniform);
+        p.kernel =
+            special_kernel(in.type == Type::Bool ? Special::LoadUniformBool : Special::LoadUniform);
         p.aux = static_cast<uint32_t>(in.imm[0]);
       } else if (in.op == Op::UniformIndexed) {
         p.kernel = special_kernel(in.type == Type::Bool ? Special::GatherBool : Special::Gather);
@@ -251,9 +250,8 @@ struct Gen {
       bool progress = false;
       for (size_t i = 0; i < moves.size(); ++i) {
         const ValueId dst = moves[i].first;
-        const bool read_later = std::any_of(moves.begin(), moves.end(), [&](const auto& m) {
-          return m.second == dst;
-        });
+        const bool read_later =
+            std::any_of(moves.begin(), moves.end(), [&](const auto& m) { return m.second == dst; });
         if (!read_later) {
           copy(dst, moves[i].second);
           moves.erase(moves.begin() + static_cast<long>(i));
@@ -408,8 +406,8 @@ struct Gen {
       break;
     }
     case Op::ExitIfNone:
-      special(is_splat(in.arg[0]) ? Special::ExitIfNoneS : Special::ExitIfNone, kNoValue,
-              in.arg[0], 0, exit_label);
+      special(is_splat(in.arg[0]) ? Special::ExitIfNoneS : Special::ExitIfNone, kNoValue, in.arg[0],
+              0, exit_label);
       lin.back().c_imm = static_cast<uint32_t>(depth - 1);
       break;
     default:
@@ -560,7 +558,8 @@ struct Gen {
           }
           (void)tk;
           for (int k = 0; k < 4; ++k)
-            d.dst[k] = t.dst[k] == kNoValue ? kRegBytes : static_cast<uint32_t>(reg[t.dst[k]]) * kRegBytes;
+            d.dst[k] =
+                t.dst[k] == kNoValue ? kRegBytes : static_cast<uint32_t>(reg[t.dst[k]]) * kRegBytes;
           code.tex.push_back(d);
           p.aux = static_cast<uint32_t>(code.tex.size() - 1);
         }
@@ -650,8 +649,8 @@ bool generate_code(const Function& ir, Stage stage, Code& out, std::string* erro
 const char* kernel_name(uint16_t id) {
   if (id < kLaneKernels) return lane_op_name(static_cast<LaneOp>(id / 8));
   switch (static_cast<Special>(id - kLaneKernels)) {
-#define PINEDA_X(name)                                                                          \
-  case Special::name:                                                                           \
+#define PINEDA_X(name)                                                                             \
+  case Special::name:                                                                              \
     return #name;
     PINEDA_SPECIAL_KERNELS(PINEDA_X)
 #undef PINEDA_X

@@ -53,7 +53,9 @@ const char* splat_base(const Prepared& p) {
   return align64(const_cast<float*>(p.splats.data()));
 }
 
-int level_index(SimdLevel l) { return static_cast<int>(l); }
+int level_index(SimdLevel l) {
+  return static_cast<int>(l);
+}
 
 // Register 0 holds the entry lanes: the first `lanes` of the run.
 void set_entry(char* regs, int lanes) {
@@ -82,7 +84,9 @@ std::unique_ptr<Executable> Executable::build(const Function& ir, Stage stage, s
 
 Executable::~Executable() = default;
 
-Stage Executable::stage() const { return impl_->stage; }
+Stage Executable::stage() const {
+  return impl_->stage;
+}
 
 size_t Executable::scratch_bytes() const {
   return size_t{impl_->code.reg_count} * kRegBytes + 4 * kBlockLanes * sizeof(float) + 64;
@@ -118,7 +122,8 @@ void Executable::run_vertices(const Prepared& p, const VertexBatch& batch, void*
   rs.tmp = reinterpret_cast<float*>(regs + size_t{impl_->code.reg_count} * kRegBytes);
   for (int base = 0; base < batch.count; base += kBlockLanes) {
     const int lanes = std::min(kBlockLanes, batch.count - base);
-    const Instr* code = (lanes == kBlockLanes ? impl_->main_full : impl_->main)[level_index(level)].data();
+    const Instr* code =
+        (lanes == kBlockLanes ? impl_->main_full : impl_->main)[level_index(level)].data();
     rs.base = base;
     rs.lanes = lanes;
     rs.budget = kRunIterationBudget;
@@ -146,18 +151,33 @@ uint64_t Executable::run_fragments(const Prepared& p, const FragmentQuads& q, vo
   if (lanes == 0) return 0;
   rs.lanes = lanes;
   set_entry(regs, lanes);
-  const Instr* code = (lanes == kBlockLanes ? impl_->main_full : impl_->main)[level_index(level)].data();
+  const Instr* code =
+      (lanes == kBlockLanes ? impl_->main_full : impl_->main)[level_index(level)].data();
   Frame f{regs, splat_base(p), code, &rs, (lanes + w - 1) / w};
   execute(code, f);
   return rs.kill;
 }
 
-const std::vector<int>& Executable::inputs_read() const { return impl_->code.inputs; }
-const std::vector<int>& Executable::outputs_written() const { return impl_->code.outputs; }
-const std::vector<int>& Executable::sampler_words() const { return impl_->code.sampler_words; }
-bool Executable::discards() const { return impl_->code.discards; }
-int Executable::instruction_count() const { return static_cast<int>(impl_->code.main.size()); }
-int Executable::prologue_count() const { return static_cast<int>(impl_->code.prologue.size()); }
-std::string Executable::disassemble() const { return shader::disassemble(impl_->code); }
+const std::vector<int>& Executable::inputs_read() const {
+  return impl_->code.inputs;
+}
+const std::vector<int>& Executable::outputs_written() const {
+  return impl_->code.outputs;
+}
+const std::vector<int>& Executable::sampler_words() const {
+  return impl_->code.sampler_words;
+}
+bool Executable::discards() const {
+  return impl_->code.discards;
+}
+int Executable::instruction_count() const {
+  return static_cast<int>(impl_->code.main.size());
+}
+int Executable::prologue_count() const {
+  return static_cast<int>(impl_->code.prologue.size());
+}
+std::string Executable::disassemble() const {
+  return shader::disassemble(impl_->code);
+}
 
 } // namespace pineda::shader

@@ -22,8 +22,8 @@
 
 namespace pineda::shader {
 
-constexpr int kBlockLanes = 64;                // lanes per register: a rasterizer block
-constexpr uint32_t kLoopIterationLimit = 65535; // per loop entry, as llvmpipe
+constexpr int kBlockLanes = 64;                    // lanes per register: a rasterizer block
+constexpr uint32_t kLoopIterationLimit = 65535;    // per loop entry, as llvmpipe
 constexpr uint32_t kRunIterationBudget = 1u << 20; // all loops of one run together
 
 // ---- texture lookups: a call out of the engine ----
@@ -32,21 +32,21 @@ constexpr uint32_t kRunIterationBudget = 1u << 20; // all loops of one run toget
 // branches they did not take) carry arbitrary coordinates, NaN included: the sampler returns
 // something for them without faulting.
 struct TexRequest {
-  int unit = 0;                      // texture image unit: the sampler uniform's value
+  int unit = 0; // texture image unit: the sampler uniform's value
   TexTarget target = TexTarget::Tex2D;
-  bool shadow = false;               // compare r with the depth texel (GL 2.1 §3.8.14)
+  bool shadow = false; // compare r with the depth texel (GL 2.1 §3.8.14)
   LodMode lod = LodMode::Implicit;
-  int lanes = 0;                     // lanes to sample; fragment lookups: whole quads
-  const float* coord[3] = {};        // s, t, r (r: the depth reference of 1D/2D shadow
-                                     // lookups); projective lookups are already divided by q
+  int lanes = 0;                      // lanes to sample; fragment lookups: whole quads
+  const float* coord[3] = {};         // s, t, r (r: the depth reference of 1D/2D shadow
+                                      // lookups); projective lookups are already divided by q
   const float* lod_or_bias = nullptr; // per lane: the bias (Bias) or the level (Explicit)
-  float* rgba[4] = {};               // per lane results
+  float* rgba[4] = {};                // per lane results
 };
 // Implicit and Bias lookups come from fragment shaders: lanes 4q..4q+3 are quad q's
 // fragments (x, y), (x+1, y), (x, y+1), (x+1, y+1), so the level of detail can be computed
 // from the quad's coordinates (§3.8.8). Vertex shaders use Explicit (0 for the non-Lod forms).
 class TextureSampler {
- public:
+public:
   virtual ~TextureSampler() = default;
   virtual void sample(const TexRequest& req) = 0;
 };
@@ -61,18 +61,18 @@ struct Prepared {
 };
 
 struct VertexBatch {
-  int count = 0;                       // vertices
-  const float* const* in = nullptr;    // in[component]: count floats (components the
-                                       // Executable reads; others may be null)
-  float* const* out = nullptr;         // out[component]: count floats (components written)
+  int count = 0;                    // vertices
+  const float* const* in = nullptr; // in[component]: count floats (components the
+                                    // Executable reads; others may be null)
+  float* const* out = nullptr;      // out[component]: count floats (components written)
   TextureSampler* sampler = nullptr;
 };
 
 struct FragmentQuads {
-  int quads = 0;                       // 1..16 quads: lanes 0 .. 4 * quads - 1
-  const float* const* in = nullptr;    // in[component]: 4 * quads floats
-  bool front_facing = true;            // gl_FrontFacing for every lane
-  float* const* out = nullptr;         // out[component]: 4 * quads floats
+  int quads = 0;                    // 1..16 quads: lanes 0 .. 4 * quads - 1
+  const float* const* in = nullptr; // in[component]: 4 * quads floats
+  bool front_facing = true;         // gl_FrontFacing for every lane
+  float* const* out = nullptr;      // out[component]: 4 * quads floats
   TextureSampler* sampler = nullptr;
 };
 
@@ -81,7 +81,7 @@ enum class Stage : uint8_t { Vertex, Fragment };
 struct ExecutableImpl;
 
 class Executable {
- public:
+public:
   // Compiles optimized IR. Fails (null, with a reason in *error) only for programs beyond the
   // engine's limits (loop nesting, register count).
   static std::unique_ptr<Executable> build(const Function& ir, Stage stage, std::string* error);
@@ -108,7 +108,7 @@ class Executable {
   // The compiled code as text (PINEDA_DEBUG=ir).
   std::string disassemble() const;
 
- private:
+private:
   Executable() = default;
   std::unique_ptr<ExecutableImpl> impl_;
 };

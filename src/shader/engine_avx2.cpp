@@ -42,7 +42,9 @@ const Kernel* kernels_avx2(bool full) {
 #else
 
 namespace pineda::shader {
-const Kernel* kernels_avx2(bool full) { return kernels_baseline(full); }
+const Kernel* kernels_avx2(bool full) {
+  return kernels_baseline(full);
+}
 } // namespace pineda::shader
 
 #endif

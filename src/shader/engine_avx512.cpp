@@ -16,8 +16,8 @@
 #include <utility>
 
 #if defined(__clang__)
-#pragma clang attribute push(                                                                   \
-    __attribute__((target("avx512f,avx512bw,avx512dq,avx512vl,avx2,bmi,bmi2"))),                \
+#pragma clang attribute push(                                                                      \
+    __attribute__((target("avx512f,avx512bw,avx512dq,avx512vl,avx2,bmi,bmi2"))),                   \
     apply_to = function)
 #else
 #pragma GCC push_options
@@ -44,7 +44,9 @@ const Kernel* kernels_avx512(bool full) {
 #else
 
 namespace pineda::shader {
-const Kernel* kernels_avx512(bool full) { return kernels_avx2(full); }
+const Kernel* kernels_avx512(bool full) {
+  return kernels_avx2(full);
+}
 } // namespace pineda::shader
 
 #endif

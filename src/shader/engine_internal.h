@@ -29,20 +29,21 @@ using Kernel = const Instr* (*)(const Instr* ip, Frame& f);
 #if defined(__has_cpp_attribute)
 #if __has_cpp_attribute(clang::musttail)
 #define PINEDA_SHADER_THREADED 1
-#define PINEDA_NEXT(next)                                                                       \
-  do {                                                                                          \
-    const Instr* pineda_next_ = (next);                                                         \
-    [[clang::musttail]] return pineda_next_->fn(pineda_next_, f);                               \
+#define PINEDA_NEXT(next)                                                                          \
+  do {                                                                                             \
+    const Instr* pineda_next_ = (next);                                                            \
+    [[clang::musttail]] return pineda_next_->fn(pineda_next_, f);                                  \
   } while (0)
 #endif
 #endif
-#if !defined(PINEDA_SHADER_THREADED) && defined(__GNUC__) && defined(__OPTIMIZE__) &&          \
-    !defined(__SANITIZE_ADDRESS__) && !defined(__SANITIZE_THREAD__) && !defined(PINEDA_SHADER_LOOP)
+#if !defined(PINEDA_SHADER_THREADED) && defined(__GNUC__) && defined(__OPTIMIZE__) &&              \
+    !defined(__SANITIZE_ADDRESS__) && !defined(__SANITIZE_THREAD__) &&                             \
+    !defined(PINEDA_SHADER_LOOP)
 #define PINEDA_SHADER_THREADED 1
-#define PINEDA_NEXT(next)                                                                       \
-  do {                                                                                          \
-    const Instr* pineda_next_ = (next);                                                         \
-    return pineda_next_->fn(pineda_next_, f);                                                   \
+#define PINEDA_NEXT(next)                                                                          \
+  do {                                                                                             \
+    const Instr* pineda_next_ = (next);                                                            \
+    return pineda_next_->fn(pineda_next_, f);                                                      \
   } while (0)
 #endif
 #if !defined(PINEDA_SHADER_THREADED)
@@ -64,25 +65,25 @@ constexpr uint32_t kSplatBytes = 64;            // one splat: 16 lanes
 constexpr int kMaxLoopDepth = 16;
 
 // The special (not lane-wise) kernels.
-#define PINEDA_SPECIAL_KERNELS(X)                                                               \
-  X(LoadInput)       /* d <- in[aux] (lanes of this run) */                                     \
-  X(LoadFacing)      /* d <- front_facing mask */                                               \
-  X(StoreOutput)     /* out[aux] <- a */                                                        \
-  X(StoreKill)       /* kill bits <- a & entry */                                               \
-  X(Gather)          /* d <- uniforms[aux + clamp(a, 0, c - 1) * b] */                          \
-  X(GatherBool)      /* the same, != 0 as a mask */                                             \
-  X(Tex)             /* texture lookup, descriptor aux */                                       \
-  X(Ddx)             /* d <- a's difference along x in each quad */                             \
-  X(Ddy)                                                                                        \
-  X(Jump)            /* to aux */                                                               \
-  X(JumpIfNone)      /* to aux when no entry lane of register a is set */                       \
-  X(JumpIfNoneS)     /* the same for a splat */                                                 \
-  X(LoopInit)        /* loop counter aux <- 0 */                                                \
-  X(ExitIfNone)      /* to aux when no entry lane of a is set or counter c is spent */          \
-  X(ExitIfNoneS)                                                                                \
-  X(End)                                                                                        \
-  X(LoadConst)       /* d <- aux bits (prologue) */                                             \
-  X(LoadUniform)     /* d <- uniforms[aux] (prologue) */                                        \
+#define PINEDA_SPECIAL_KERNELS(X)                                                                  \
+  X(LoadInput)   /* d <- in[aux] (lanes of this run) */                                            \
+  X(LoadFacing)  /* d <- front_facing mask */                                                      \
+  X(StoreOutput) /* out[aux] <- a */                                                               \
+  X(StoreKill)   /* kill bits <- a & entry */                                                      \
+  X(Gather)      /* d <- uniforms[aux + clamp(a, 0, c - 1) * b] */                                 \
+  X(GatherBool)  /* the same, != 0 as a mask */                                                    \
+  X(Tex)         /* texture lookup, descriptor aux */                                              \
+  X(Ddx)         /* d <- a's difference along x in each quad */                                    \
+  X(Ddy)                                                                                           \
+  X(Jump)        /* to aux */                                                                      \
+  X(JumpIfNone)  /* to aux when no entry lane of register a is set */                              \
+  X(JumpIfNoneS) /* the same for a splat */                                                        \
+  X(LoopInit)    /* loop counter aux <- 0 */                                                       \
+  X(ExitIfNone)  /* to aux when no entry lane of a is set or counter c is spent */                 \
+  X(ExitIfNoneS)                                                                                   \
+  X(End)                                                                                           \
+  X(LoadConst)       /* d <- aux bits (prologue) */                                                \
+  X(LoadUniform)     /* d <- uniforms[aux] (prologue) */                                           \
   X(LoadUniformBool) /* d <- uniforms[aux] != 0 (prologue) */
 
 enum class Special : uint16_t {
@@ -115,8 +116,8 @@ struct TexDesc {
   TexKind kind;
   uint32_t coord[3] = {0, 0, 0}; // register or splat offsets
   uint32_t lod = 0;
-  uint8_t present = 0;           // bit i: coord[i] used; bit 3: lod used
-  uint8_t splat = 0;             // bit i: operand i is a splat
+  uint8_t present = 0; // bit i: coord[i] used; bit 3: lod used
+  uint8_t splat = 0;   // bit i: operand i is a splat
   uint32_t dst[4] = {0, 0, 0, 0};
 };
 
@@ -133,7 +134,7 @@ struct RunState {
   uint32_t loop_count[kMaxLoopDepth] = {};
   uint32_t budget = kRunIterationBudget;
   uint64_t kill = 0;
-  float* tmp = nullptr; // 4 * kBlockLanes floats for splatted texture operands
+  float* tmp = nullptr;    // 4 * kBlockLanes floats for splatted texture operands
   uint32_t caller_csr = 0; // the caller's floating-point environment (fp_env.h)
 };
 

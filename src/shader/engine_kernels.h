@@ -54,8 +54,7 @@ template <int W, LaneOp op, int K, int NV> const Instr* k_lane(const Instr* ip, 
     const F as = a[0], bs = b[0];
 #pragma GCC unroll 16
     for (int i = 0; i < nv; ++i)
-      d[i] = PINEDA_SIMD_NS::apply_lane_op<op, F, D>((K & 1) ? as : a[i], (K & 2) ? bs : b[i],
-                                                     F{});
+      d[i] = PINEDA_SIMD_NS::apply_lane_op<op, F, D>((K & 1) ? as : a[i], (K & 2) ? bs : b[i], F{});
   } else {
     const F as = a[0], bs = b[0], cs = c[0];
 #pragma GCC unroll 16
@@ -94,8 +93,7 @@ template <int W> const Instr* k_load_facing(const Instr* ip, Frame& f) {
 template <int W> const Instr* k_store_output(const Instr* ip, Frame& f) {
   const RunState& rs = *f.rs;
   float* dst = rs.out ? rs.out[ip->aux] : nullptr;
-  if (dst)
-    std::memcpy(dst + rs.base, f.regs + ip->a, static_cast<size_t>(rs.lanes) * 4);
+  if (dst) std::memcpy(dst + rs.base, f.regs + ip->a, static_cast<size_t>(rs.lanes) * 4);
   PINEDA_NEXT(ip + 1);
 }
 
@@ -198,7 +196,9 @@ template <int W> inline bool any_entry(const Frame& f, uint32_t off) {
   return r != 0;
 }
 
-template <int W> const Instr* k_jump(const Instr* ip, Frame& f) { PINEDA_NEXT(f.code + ip->aux); }
+template <int W> const Instr* k_jump(const Instr* ip, Frame& f) {
+  PINEDA_NEXT(f.code + ip->aux);
+}
 template <int W> const Instr* k_jump_if_none(const Instr* ip, Frame& f) {
   PINEDA_NEXT(any_entry<W>(f, ip->a) ? ip + 1 : f.code + ip->aux);
 }
@@ -227,7 +227,9 @@ template <int W> const Instr* k_exit_if_none_s(const Instr* ip, Frame& f) {
   std::memcpy(&m, f.splats + ip->a, 4);
   PINEDA_NEXT(m != 0 && loop_continues(f, ip->c) ? ip + 1 : f.code + ip->aux);
 }
-template <int W> const Instr* k_end(const Instr*, Frame&) { return nullptr; }
+template <int W> const Instr* k_end(const Instr*, Frame&) {
+  return nullptr;
+}
 
 // ---- the prologue's leaves ----
 

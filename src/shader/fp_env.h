@@ -14,7 +14,7 @@
 namespace pineda::shader {
 
 class ShaderFpEnv {
- public:
+public:
   ShaderFpEnv() {
 #if defined(__SSE2__)
     saved_ = _mm_getcsr();
@@ -28,9 +28,11 @@ class ShaderFpEnv {
   }
   ShaderFpEnv(const ShaderFpEnv&) = delete;
   ShaderFpEnv& operator=(const ShaderFpEnv&) = delete;
-  uint32_t saved() const { return saved_; }
+  uint32_t saved() const {
+    return saved_;
+  }
 
- private:
+private:
   uint32_t saved_ = 0;
 };
 

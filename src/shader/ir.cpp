@@ -11,8 +11,8 @@ namespace pineda::shader {
 
 const char* op_name(Op op) {
   switch (op) {
-#define PINEDA_X(name)                                                                          \
-  case Op::name:                                                                                \
+#define PINEDA_X(name)                                                                             \
+  case Op::name:                                                                                   \
     return #name;
     PINEDA_IR_OPS(PINEDA_X)
 #undef PINEDA_X
@@ -113,11 +113,21 @@ void Function::rebuild_leaf_index() {
 ValueId Function::constant(Type t, uint32_t bits) {
   return leaf(Op::Const, t, static_cast<int32_t>(bits));
 }
-ValueId Function::const_f(float f) { return constant(Type::Float, std::bit_cast<uint32_t>(f)); }
-ValueId Function::const_i(int32_t i) { return constant(Type::Int, static_cast<uint32_t>(i)); }
-ValueId Function::const_b(bool b) { return constant(Type::Bool, b ? ~0u : 0u); }
-ValueId Function::uniform(Type t, int32_t word) { return leaf(Op::Uniform, t, word); }
-ValueId Function::input(Type t, int32_t component) { return leaf(Op::Input, t, component); }
+ValueId Function::const_f(float f) {
+  return constant(Type::Float, std::bit_cast<uint32_t>(f));
+}
+ValueId Function::const_i(int32_t i) {
+  return constant(Type::Int, static_cast<uint32_t>(i));
+}
+ValueId Function::const_b(bool b) {
+  return constant(Type::Bool, b ? ~0u : 0u);
+}
+ValueId Function::uniform(Type t, int32_t word) {
+  return leaf(Op::Uniform, t, word);
+}
+ValueId Function::input(Type t, int32_t component) {
+  return leaf(Op::Input, t, component);
+}
 
 ValueId Function::phi(Type t) {
   Inst in;
@@ -127,7 +137,9 @@ ValueId Function::phi(Type t) {
   return static_cast<ValueId>(insts.size() - 1);
 }
 
-float Function::const_float(ValueId v) const { return std::bit_cast<float>(const_bits(v)); }
+float Function::const_float(ValueId v) const {
+  return std::bit_cast<float>(const_bits(v));
+}
 
 ValueId Function::emit(Block& b, Op op, Type t, ValueId a0, ValueId a1, ValueId a2, ValueId a3) {
   Inst in;
@@ -269,8 +281,8 @@ struct Printer {
         const Loop& l = f.loops[n.index];
         line(depth, "loop {");
         for (const LoopPhi& p : l.phis)
-          line(depth + 1, cat(v(p.phi), " = phi.", type_suffix(f.insts[p.phi].type), " ",
-                              v(p.init), ", ", v(p.next)));
+          line(depth + 1, cat(v(p.phi), " = phi.", type_suffix(f.insts[p.phi].type), " ", v(p.init),
+                              ", ", v(p.next)));
         block(l.body, depth + 1);
         std::string exits = "}";
         for (const LoopExit& e : l.exits)
@@ -293,8 +305,8 @@ struct Verifier {
   void use(ValueId v, ValueId user) {
     if (v == kNoValue) return;
     if (!ok(v))
-      fail(cat("%", std::to_string(user), " uses %", std::to_string(v),
-               " where it is not defined"));
+      fail(
+          cat("%", std::to_string(user), " uses %", std::to_string(v), " where it is not defined"));
   }
   // Defines every value of `b`, recursing; returns the values defined at this level so that
   // the caller can undefine them when the scope ends.
@@ -325,7 +337,8 @@ struct Verifier {
         use(r.cond, kNoValue);
         std::vector<ValueId> inner;
         block(r.body, inner, loop_depth, false, nullptr);
-        for (const RegionOut& o : r.outs) use(o.inner, o.phi);
+        for (const RegionOut& o : r.outs)
+          use(o.inner, o.phi);
         for (ValueId v : inner)
           defined[v] = 0;
         for (const RegionOut& o : r.outs) {

@@ -10,8 +10,8 @@ namespace pineda::shader {
 
 const char* lane_op_name(LaneOp op) {
   switch (op) {
-#define PINEDA_X(name, n)                                                                       \
-  case LaneOp::name:                                                                            \
+#define PINEDA_X(name, n)                                                                          \
+  case LaneOp::name:                                                                               \
     return #name;
     PINEDA_LANE_OPS(PINEDA_X)
 #undef PINEDA_X
@@ -166,7 +166,9 @@ using F4 = float __attribute__((vector_size(16)));
 using D4 = double __attribute__((vector_size(32)));
 using FoldFn = F4 (*)(F4, F4, F4);
 
-template <LaneOp op> F4 fold_one(F4 a, F4 b, F4 c) { return vm::apply_lane_op<op, F4, D4>(a, b, c); }
+template <LaneOp op> F4 fold_one(F4 a, F4 b, F4 c) {
+  return vm::apply_lane_op<op, F4, D4>(a, b, c);
+}
 
 constexpr FoldFn kFold[] = {
 #define PINEDA_X(name, n) &fold_one<LaneOp::name>,

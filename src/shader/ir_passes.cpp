@@ -106,8 +106,7 @@ struct Simplifier {
 
   std::vector<uint8_t> uniform;
 
-  explicit Simplifier(Function& fn)
-      : f(fn), r(fn.insts.size()), uniform(uniform_values(fn)) {}
+  explicit Simplifier(Function& fn) : f(fn), r(fn.insts.size()), uniform(uniform_values(fn)) {}
 
   void replace(ValueId from, ValueId to) {
     r.set(from, to);
@@ -251,8 +250,7 @@ struct Simplifier {
         out.push_back(n);
       for (RegionOut& o : moved.outs) {
         if (merge)
-          replace(o.phi,
-                  f.emit(out, Op::Select, f.type(o.phi), moved.cond, o.inner, o.outer));
+          replace(o.phi, f.emit(out, Op::Select, f.type(o.phi), moved.cond, o.inner, o.outer));
         else
           replace(o.phi, o.inner);
       }
@@ -327,7 +325,8 @@ struct CseKey {
 };
 struct CseHash {
   size_t operator()(const CseKey& k) const {
-    uint64_t h = static_cast<uint64_t>(k.op) * 0x9e3779b97f4a7c15ull + static_cast<uint64_t>(k.type);
+    uint64_t h =
+        static_cast<uint64_t>(k.op) * 0x9e3779b97f4a7c15ull + static_cast<uint64_t>(k.type);
     for (ValueId a : k.arg)
       h = (h ^ a) * 0x100000001b3ull;
     for (int32_t i : k.imm)
@@ -369,10 +368,12 @@ struct Cse {
         Inst& in = f.insts[n.index];
         for (ValueId& a : in.arg)
           a = r(a);
-        const bool candidate = op_is_pure_lanewise(in.op) || in.op == Op::Ddx ||
-                               in.op == Op::Ddy || in.op == Op::Tex || in.op == Op::TexComp;
+        const bool candidate = op_is_pure_lanewise(in.op) || in.op == Op::Ddx || in.op == Op::Ddy ||
+                               in.op == Op::Tex || in.op == Op::TexComp;
         if (candidate) {
-          CseKey k{in.op, in.type, {in.arg[0], in.arg[1], in.arg[2], in.arg[3]},
+          CseKey k{in.op,
+                   in.type,
+                   {in.arg[0], in.arg[1], in.arg[2], in.arg[3]},
                    {in.imm[0], in.imm[1], in.imm[2]}};
           if (commutative(in.op) && k.arg[0] > k.arg[1]) std::swap(k.arg[0], k.arg[1]);
           auto it = table.find(k);
@@ -657,7 +658,9 @@ void optimize(Function& f) {
   }
 }
 
-int count_insts(const Function& f) { return count_block(f, f.body); }
+int count_insts(const Function& f) {
+  return count_block(f, f.body);
+}
 
 std::vector<uint8_t> used_values(const Function& f) {
   std::vector<uint8_t> used(f.insts.size(), 0);

@@ -32,23 +32,37 @@ template <class F> struct UnsignedOf {
 };
 template <class F> using UOf = typename UnsignedOf<F>::type;
 
-template <class F> inline IOf<F> as_int(F x) { return (IOf<F>)x; }
-template <class F, class I> inline F as_float(I x) { return (F)x; }
+template <class F> inline IOf<F> as_int(F x) {
+  return (IOf<F>)x;
+}
+template <class F, class I> inline F as_float(I x) {
+  return (F)x;
+}
 
 // m ? a : b for lane masks m (all ones or zero).
 template <class F> inline F sel(IOf<F> m, F a, F b) {
   return as_float<F>((as_int(a) & m) | (as_int(b) & ~m));
 }
-template <class I> inline I seli(I m, I a, I b) { return (a & m) | (b & ~m); }
+template <class I> inline I seli(I m, I a, I b) {
+  return (a & m) | (b & ~m);
+}
 
-template <class F> inline F splat(float v) { return F{} + v; }
+template <class F> inline F splat(float v) {
+  return F{} + v;
+}
 
 // min and max return the operand that is a number when the other is NaN (IEEE 754 minNum,
 // maxNum; piglit's fs-nan-builtin-min/max check it).
-template <class F> inline F vmin(F a, F b) { return sel((a < b) | (b != b), a, b); }
-template <class F> inline F vmax(F a, F b) { return sel((a > b) | (b != b), a, b); }
+template <class F> inline F vmin(F a, F b) {
+  return sel((a < b) | (b != b), a, b);
+}
+template <class F> inline F vmax(F a, F b) {
+  return sel((a > b) | (b != b), a, b);
+}
 
-template <class F> inline F vabs(F x) { return as_float<F>(as_int(x) & 0x7fffffff); }
+template <class F> inline F vabs(F x) {
+  return as_float<F>(as_int(x) & 0x7fffffff);
+}
 
 // The square root, correctly rounded (the processor's instruction at each width).
 // The 8- and 16-lane forms are only instantiated by the files compiled for AVX2 and AVX-512.
@@ -94,7 +108,9 @@ template <class F> inline IOf<F> f2i(F x) {
   c = vmin(c, splat<F>(2147483520.0f));
   return __builtin_convertvector(c, I);
 }
-template <class F> inline F i2f(IOf<F> x) { return __builtin_convertvector(x, F); }
+template <class F> inline F i2f(IOf<F> x) {
+  return __builtin_convertvector(x, F);
+}
 
 template <class F> inline F vfloor(F x) {
   using I = IOf<F>;
@@ -105,8 +121,12 @@ template <class F> inline F vfloor(F x) {
   t = t - sel(t > xs, splat<F>(1.0f), F{});
   return sel(small, t, x);
 }
-template <class F> inline F vceil(F x) { return -vfloor(-x); }
-template <class F> inline F vfract(F x) { return x - vfloor(x); }
+template <class F> inline F vceil(F x) {
+  return -vfloor(-x);
+}
+template <class F> inline F vfract(F x) {
+  return x - vfloor(x);
+}
 
 // sin and cos share the reduction x = k * pi/2 + r, |r| <= pi/4 (Cody-Waite with three parts
 // of pi/2: the first two have few enough bits that k * part is exact for |k| < 2^15).
@@ -213,9 +233,15 @@ template <class F> inline F vlog2(F x) {
   r = sel((x == inf) | (x != x), x, r);
   return r;
 }
-template <class F> inline F vexp(F x) { return vexp2(x * splat<F>(0x1.715476p+0f)); }
-template <class F> inline F vlog(F x) { return vlog2(x) * splat<F>(0x1.62e43p-1f); }
-template <class F> inline F vpow(F x, F y) { return vexp2(y * vlog2(x)); }
+template <class F> inline F vexp(F x) {
+  return vexp2(x * splat<F>(0x1.715476p+0f));
+}
+template <class F> inline F vlog(F x) {
+  return vlog2(x) * splat<F>(0x1.62e43p-1f);
+}
+template <class F> inline F vpow(F x, F y) {
+  return vexp2(y * vlog2(x));
+}
 
 // asin on [0, 1/2] by its Taylor series (first omitted term below 3e-8 relative).
 template <class F> inline F asin_small(F a) {

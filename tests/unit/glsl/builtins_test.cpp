@@ -25,8 +25,12 @@ struct Case {
   double tol_abs, tol_rel;
 };
 
-double glsl_mod(double x, double y) { return x - y * std::floor(x / y); }
-double glsl_sign(double x) { return x > 0 ? 1 : x < 0 ? -1 : 0; }
+double glsl_mod(double x, double y) {
+  return x - y * std::floor(x / y);
+}
+double glsl_sign(double x) {
+  return x > 0 ? 1 : x < 0 ? -1 : 0;
+}
 double smooth(double e0, double e1, double x) {
   const double t = std::clamp((x - e0) / (e1 - e0), 0.0, 1.0);
   return t * t * (3 - 2 * t);
@@ -34,41 +38,242 @@ double smooth(double e0, double e1, double x) {
 
 const Case kCases[] = {
     // §8.1 angle and trigonometry
-    {"radians", "radians(a)", 1, {-720, 0, 0}, {720, 0, 0}, [](double x, double, double) { return x * kPi / 180; }, 0, 1e-6},
-    {"degrees", "degrees(a)", 1, {-10, 0, 0}, {10, 0, 0}, [](double x, double, double) { return x * 180 / kPi; }, 0, 1e-6},
-    {"sin", "sin(a)", 1, {-10, 0, 0}, {10, 0, 0}, [](double x, double, double) { return std::sin(x); }, 2e-6, 0},
-    {"cos", "cos(a)", 1, {-10, 0, 0}, {10, 0, 0}, [](double x, double, double) { return std::cos(x); }, 2e-6, 0},
-    {"tan", "tan(a)", 1, {-1.4f, 0, 0}, {1.4f, 0, 0}, [](double x, double, double) { return std::tan(x); }, 1e-6, 2e-6},
-    {"asin", "asin(a)", 1, {-1, 0, 0}, {1, 0, 0}, [](double x, double, double) { return std::asin(x); }, 2e-6, 0},
-    {"acos", "acos(a)", 1, {-1, 0, 0}, {1, 0, 0}, [](double x, double, double) { return std::acos(x); }, 2e-6, 0},
-    {"atan", "atan(a)", 1, {-100, 0, 0}, {100, 0, 0}, [](double x, double, double) { return std::atan(x); }, 2e-6, 0},
-    {"atan2", "atan(a, b)", 2, {-10, -10, 0}, {10, 10, 0}, [](double y, double x, double) { return std::atan2(y, x); }, 4e-6, 0},
+    {"radians",
+     "radians(a)",
+     1,
+     {-720, 0, 0},
+     {720, 0, 0},
+     [](double x, double, double) { return x * kPi / 180; },
+     0,
+     1e-6},
+    {"degrees",
+     "degrees(a)",
+     1,
+     {-10, 0, 0},
+     {10, 0, 0},
+     [](double x, double, double) { return x * 180 / kPi; },
+     0,
+     1e-6},
+    {"sin",
+     "sin(a)",
+     1,
+     {-10, 0, 0},
+     {10, 0, 0},
+     [](double x, double, double) { return std::sin(x); },
+     2e-6,
+     0},
+    {"cos",
+     "cos(a)",
+     1,
+     {-10, 0, 0},
+     {10, 0, 0},
+     [](double x, double, double) { return std::cos(x); },
+     2e-6,
+     0},
+    {"tan",
+     "tan(a)",
+     1,
+     {-1.4f, 0, 0},
+     {1.4f, 0, 0},
+     [](double x, double, double) { return std::tan(x); },
+     1e-6,
+     2e-6},
+    {"asin",
+     "asin(a)",
+     1,
+     {-1, 0, 0},
+     {1, 0, 0},
+     [](double x, double, double) { return std::asin(x); },
+     2e-6,
+     0},
+    {"acos",
+     "acos(a)",
+     1,
+     {-1, 0, 0},
+     {1, 0, 0},
+     [](double x, double, double) { return std::acos(x); },
+     2e-6,
+     0},
+    {"atan",
+     "atan(a)",
+     1,
+     {-100, 0, 0},
+     {100, 0, 0},
+     [](double x, double, double) { return std::atan(x); },
+     2e-6,
+     0},
+    {"atan2",
+     "atan(a, b)",
+     2,
+     {-10, -10, 0},
+     {10, 10, 0},
+     [](double y, double x, double) { return std::atan2(y, x); },
+     4e-6,
+     0},
     // §8.2 exponential
-    {"pow", "pow(a, b)", 2, {0.01f, -3, 0}, {10, 3, 0}, [](double x, double y, double) { return std::pow(x, y); }, 0, 2e-6},
-    {"exp", "exp(a)", 1, {-20, 0, 0}, {20, 0, 0}, [](double x, double, double) { return std::exp(x); }, 0, 4e-6},
-    {"log", "log(a)", 1, {1e-3f, 0, 0}, {1e3f, 0, 0}, [](double x, double, double) { return std::log(x); }, 1e-6, 1e-6},
-    {"exp2", "exp2(a)", 1, {-30, 0, 0}, {30, 0, 0}, [](double x, double, double) { return std::exp2(x); }, 0, 1e-6},
-    {"log2", "log2(a)", 1, {1e-3f, 0, 0}, {1e4f, 0, 0}, [](double x, double, double) { return std::log2(x); }, 1e-6, 1e-6},
-    {"sqrt", "sqrt(a)", 1, {0, 0, 0}, {1e4f, 0, 0}, [](double x, double, double) { return std::sqrt(x); }, 0, 1e-7},
-    {"inversesqrt", "inversesqrt(a)", 1, {1e-3f, 0, 0}, {1e3f, 0, 0}, [](double x, double, double) { return 1 / std::sqrt(x); }, 0, 2e-7},
+    {"pow",
+     "pow(a, b)",
+     2,
+     {0.01f, -3, 0},
+     {10, 3, 0},
+     [](double x, double y, double) { return std::pow(x, y); },
+     0,
+     2e-6},
+    {"exp",
+     "exp(a)",
+     1,
+     {-20, 0, 0},
+     {20, 0, 0},
+     [](double x, double, double) { return std::exp(x); },
+     0,
+     4e-6},
+    {"log",
+     "log(a)",
+     1,
+     {1e-3f, 0, 0},
+     {1e3f, 0, 0},
+     [](double x, double, double) { return std::log(x); },
+     1e-6,
+     1e-6},
+    {"exp2",
+     "exp2(a)",
+     1,
+     {-30, 0, 0},
+     {30, 0, 0},
+     [](double x, double, double) { return std::exp2(x); },
+     0,
+     1e-6},
+    {"log2",
+     "log2(a)",
+     1,
+     {1e-3f, 0, 0},
+     {1e4f, 0, 0},
+     [](double x, double, double) { return std::log2(x); },
+     1e-6,
+     1e-6},
+    {"sqrt",
+     "sqrt(a)",
+     1,
+     {0, 0, 0},
+     {1e4f, 0, 0},
+     [](double x, double, double) { return std::sqrt(x); },
+     0,
+     1e-7},
+    {"inversesqrt",
+     "inversesqrt(a)",
+     1,
+     {1e-3f, 0, 0},
+     {1e3f, 0, 0},
+     [](double x, double, double) { return 1 / std::sqrt(x); },
+     0,
+     2e-7},
     // §8.3 common
-    {"abs", "abs(a)", 1, {-100, 0, 0}, {100, 0, 0}, [](double x, double, double) { return std::fabs(x); }, 0, 0},
-    {"sign", "sign(a)", 1, {-2, 0, 0}, {2, 0, 0}, [](double x, double, double) { return glsl_sign(x); }, 0, 0},
-    {"floor", "floor(a)", 1, {-100, 0, 0}, {100, 0, 0}, [](double x, double, double) { return std::floor(x); }, 0, 0},
-    {"ceil", "ceil(a)", 1, {-100, 0, 0}, {100, 0, 0}, [](double x, double, double) { return std::ceil(x); }, 0, 0},
-    {"fract", "fract(a)", 1, {-100, 0, 0}, {100, 0, 0}, [](double x, double, double) { return x - std::floor(x); }, 0, 0},
-    {"mod", "mod(a, b)", 2, {-100, 0.5f, 0}, {100, 10, 0}, [](double x, double y, double) { return glsl_mod(x, y); }, 1e-5, 0},
+    {"abs",
+     "abs(a)",
+     1,
+     {-100, 0, 0},
+     {100, 0, 0},
+     [](double x, double, double) { return std::fabs(x); },
+     0,
+     0},
+    {"sign",
+     "sign(a)",
+     1,
+     {-2, 0, 0},
+     {2, 0, 0},
+     [](double x, double, double) { return glsl_sign(x); },
+     0,
+     0},
+    {"floor",
+     "floor(a)",
+     1,
+     {-100, 0, 0},
+     {100, 0, 0},
+     [](double x, double, double) { return std::floor(x); },
+     0,
+     0},
+    {"ceil",
+     "ceil(a)",
+     1,
+     {-100, 0, 0},
+     {100, 0, 0},
+     [](double x, double, double) { return std::ceil(x); },
+     0,
+     0},
+    {"fract",
+     "fract(a)",
+     1,
+     {-100, 0, 0},
+     {100, 0, 0},
+     [](double x, double, double) { return x - std::floor(x); },
+     0,
+     0},
+    {"mod",
+     "mod(a, b)",
+     2,
+     {-100, 0.5f, 0},
+     {100, 10, 0},
+     [](double x, double y, double) { return glsl_mod(x, y); },
+     1e-5,
+     0},
     {"mod_float", "mod(a, b.x)", 2, {-100, 0.5f, 0}, {100, 10, 0}, nullptr, 1e-5, 0},
-    {"min", "min(a, b)", 2, {-10, -10, 0}, {10, 10, 0}, [](double x, double y, double) { return std::min(x, y); }, 0, 0},
-    {"max", "max(a, b)", 2, {-10, -10, 0}, {10, 10, 0}, [](double x, double y, double) { return std::max(x, y); }, 0, 0},
-    {"clamp", "clamp(a, b, b + abs(c))", 3, {-10, -5, -5}, {10, 5, 5},
-     [](double x, double lo, double w) { return std::min(std::max(x, lo), lo + std::fabs(w)); }, 1e-6, 0},
-    {"mix", "mix(a, b, c)", 3, {-10, -10, 0}, {10, 10, 1}, [](double x, double y, double t) { return x * (1 - t) + y * t; }, 2e-6, 0},
-    {"step", "step(a, b)", 2, {-1, -1, 0}, {1, 1, 0}, [](double e, double x, double) { return x < e ? 0.0 : 1.0; }, 0, 0},
-    {"smoothstep", "smoothstep(a, a + 0.5 + abs(b), c)", 3, {-1, -1, -2}, {1, 1, 3},
-     [](double e0, double w, double x) { return smooth(e0, e0 + 0.5 + std::fabs(w), x); }, 2e-6, 0},
+    {"min",
+     "min(a, b)",
+     2,
+     {-10, -10, 0},
+     {10, 10, 0},
+     [](double x, double y, double) { return std::min(x, y); },
+     0,
+     0},
+    {"max",
+     "max(a, b)",
+     2,
+     {-10, -10, 0},
+     {10, 10, 0},
+     [](double x, double y, double) { return std::max(x, y); },
+     0,
+     0},
+    {"clamp",
+     "clamp(a, b, b + abs(c))",
+     3,
+     {-10, -5, -5},
+     {10, 5, 5},
+     [](double x, double lo, double w) { return std::min(std::max(x, lo), lo + std::fabs(w)); },
+     1e-6,
+     0},
+    {"mix",
+     "mix(a, b, c)",
+     3,
+     {-10, -10, 0},
+     {10, 10, 1},
+     [](double x, double y, double t) { return x * (1 - t) + y * t; },
+     2e-6,
+     0},
+    {"step",
+     "step(a, b)",
+     2,
+     {-1, -1, 0},
+     {1, 1, 0},
+     [](double e, double x, double) { return x < e ? 0.0 : 1.0; },
+     0,
+     0},
+    {"smoothstep",
+     "smoothstep(a, a + 0.5 + abs(b), c)",
+     3,
+     {-1, -1, -2},
+     {1, 1, 3},
+     [](double e0, double w, double x) { return smooth(e0, e0 + 0.5 + std::fabs(w), x); },
+     2e-6,
+     0},
     // §8.9 noise (zero, as Mesa)
-    {"noise1", "vec4(noise1(a))", 1, {-5, 0, 0}, {5, 0, 0}, [](double, double, double) { return 0.0; }, 0, 0},
+    {"noise1",
+     "vec4(noise1(a))",
+     1,
+     {-5, 0, 0},
+     {5, 0, 0},
+     [](double, double, double) { return 0.0; },
+     0,
+     0},
 };
 
 std::vector<std::array<Vec4, 4>> random_inputs(const Case& c, unsigned seed) {
@@ -87,8 +292,9 @@ class BuiltinTest : public ::testing::TestWithParam<Case> {};
 
 TEST_P(BuiltinTest, MatchesDoubleReferenceAtEveryLevel) {
   const Case& c = GetParam();
-  const std::string src = std::string("varying vec4 v0, v1, v2;\nvoid main() {\n  vec4 a = v0, b = v1, c = v2;\n") +
-                          "  gl_FragColor = " + c.expr + ";\n}\n";
+  const std::string src =
+      std::string("varying vec4 v0, v1, v2;\nvoid main() {\n  vec4 a = v0, b = v1, c = v2;\n") +
+      "  gl_FragColor = " + c.expr + ";\n}\n";
   LaneShader sh(src);
   ASSERT_TRUE(sh.ok()) << sh.log;
   const auto in = random_inputs(c, 1234);
@@ -125,11 +331,26 @@ INSTANTIATE_TEST_SUITE_P(Glsl120, BuiltinTest, ::testing::ValuesIn(kCases),
 // The same expression from varyings (per-lane kernels), uniforms (the prologue) and literals
 // (the constant folder) gives the same bits.
 TEST(BuiltinPaths, VaryingUniformAndConstantAgree) {
-  const char* fns[] = {"sin(T)", "cos(T)", "tan(T * 0.1)", "asin(T * 0.1)", "acos(T * 0.1)",
-                       "atan(T)", "atan(T, 0.7)", "pow(abs(T), 1.3)", "exp(T)", "log(abs(T))",
-                       "exp2(T)", "log2(abs(T))", "sqrt(abs(T))", "inversesqrt(abs(T))",
-                       "fract(T)", "mod(T, 0.7)", "smoothstep(-1.0, 2.0, T)", "sign(T)",
-                       "degrees(T)", "floor(T * 3.3)"};
+  const char* fns[] = {"sin(T)",
+                       "cos(T)",
+                       "tan(T * 0.1)",
+                       "asin(T * 0.1)",
+                       "acos(T * 0.1)",
+                       "atan(T)",
+                       "atan(T, 0.7)",
+                       "pow(abs(T), 1.3)",
+                       "exp(T)",
+                       "log(abs(T))",
+                       "exp2(T)",
+                       "log2(abs(T))",
+                       "sqrt(abs(T))",
+                       "inversesqrt(abs(T))",
+                       "fract(T)",
+                       "mod(T, 0.7)",
+                       "smoothstep(-1.0, 2.0, T)",
+                       "sign(T)",
+                       "degrees(T)",
+                       "floor(T * 3.3)"};
   const float xs[] = {-7.25f, -1.5f, -0.3f, 0.0f, 0.4f, 1.0f, 2.71828f, 9.5f};
   const auto with = [](std::string e, const std::string& by) {
     for (size_t p = 0; (p = e.find('T', p)) != std::string::npos; p += by.size())
@@ -137,8 +358,10 @@ TEST(BuiltinPaths, VaryingUniformAndConstantAgree) {
     return e;
   };
   for (const char* fn : fns) {
-    LaneShader vary("varying vec4 v0;\nvoid main() { gl_FragColor = vec4(" + with(fn, "v0.x") + "); }\n");
-    LaneShader unif("uniform float u;\nvoid main() { gl_FragColor = vec4(" + with(fn, "u") + "); }\n");
+    LaneShader vary("varying vec4 v0;\nvoid main() { gl_FragColor = vec4(" + with(fn, "v0.x") +
+                    "); }\n");
+    LaneShader unif("uniform float u;\nvoid main() { gl_FragColor = vec4(" + with(fn, "u") +
+                    "); }\n");
     ASSERT_TRUE(vary.ok() && unif.ok()) << vary.log << unif.log;
     for (float x : xs) {
       char lit[32];
@@ -198,7 +421,8 @@ TEST(BuiltinGeometric, MatchDoubleReference) {
       set_simd_level(simd_level_supported());
       for (size_t lane = 0; lane < out.size(); ++lane) {
         const auto& x = in[lane];
-        const V3 a{x[0][0], x[0][1], x[0][2]}, b{x[1][0], x[1][1], x[1][2]}, n{x[2][0], x[2][1], x[2][2]};
+        const V3 a{x[0][0], x[0][1], x[0][2]}, b{x[1][0], x[1][1], x[1][2]},
+            n{x[2][0], x[2][1], x[2][2]};
         double want[4] = {0, 0, 0, 0};
         if (which == 0) {
           const V3 dd{a[0] - b[0], a[1] - b[1], a[2] - b[2]};
@@ -226,7 +450,9 @@ TEST(BuiltinGeometric, MatchDoubleReference) {
           const V3 i = norm(a), nb = norm(b);
           const double e = x[2][3], dd = dot3(nb, i), k2 = 1 - e * e * (1 - dd * dd);
           for (int k = 0; k < 3; ++k)
-            want[k] = k2 < 0 ? 0 : e * i[static_cast<size_t>(k)] - (e * dd + std::sqrt(k2)) * nb[static_cast<size_t>(k)];
+            want[k] = k2 < 0 ? 0
+                             : e * i[static_cast<size_t>(k)] -
+                                   (e * dd + std::sqrt(k2)) * nb[static_cast<size_t>(k)];
         }
         for (size_t k = 0; k < 4; ++k)
           EXPECT_NEAR(out[lane][k], want[k], 2e-5 * (1 + std::fabs(want[k])))
@@ -238,21 +464,21 @@ TEST(BuiltinGeometric, MatchDoubleReference) {
 
 // §8.5 matrix functions and the matrix operators, square and not.
 TEST(BuiltinMatrix, MatchDoubleReference) {
-  LaneShader sh(
-      "#version 120\n"
-      "varying vec4 v0, v1, v2, v3;\n"
-      "uniform int which;\n"
-      "void main() {\n"
-      "  mat2x3 a = mat2x3(v0.xyz, v1.xyz);\n"     // 2 columns, 3 rows
-      "  mat3x2 b = mat3x2(v2.xy, v2.zw, v3.xy);\n" // 3 columns, 2 rows
-      "  mat3 p = a * b;\n"                         // 3x3
-      "  mat2 q = b * a;\n"                         // 2x2
-      "  if (which == 0) gl_FragColor = vec4(p[0][0], p[1][2], p[2][1], q[1][0]);\n"
-      "  else if (which == 1) gl_FragColor = vec4(transpose(a)[2], transpose(b)[1].zx);\n"
-      "  else if (which == 2) gl_FragColor = vec4(matrixCompMult(a, mat2x3(v2.xyz, v3.xyz))[1], outerProduct(v0.xy, v1.xyz)[2][1]);\n"
-      "  else if (which == 3) gl_FragColor = vec4(a * v3.xy, 0.0);\n"
-      "  else gl_FragColor = vec4(v3.xyz * a, 0.0, mat4(v0, v1, v2, v3)[2][3]);\n"
-      "}\n");
+  LaneShader sh("#version 120\n"
+                "varying vec4 v0, v1, v2, v3;\n"
+                "uniform int which;\n"
+                "void main() {\n"
+                "  mat2x3 a = mat2x3(v0.xyz, v1.xyz);\n"      // 2 columns, 3 rows
+                "  mat3x2 b = mat3x2(v2.xy, v2.zw, v3.xy);\n" // 3 columns, 2 rows
+                "  mat3 p = a * b;\n"                         // 3x3
+                "  mat2 q = b * a;\n"                         // 2x2
+                "  if (which == 0) gl_FragColor = vec4(p[0][0], p[1][2], p[2][1], q[1][0]);\n"
+                "  else if (which == 1) gl_FragColor = vec4(transpose(a)[2], transpose(b)[1].zx);\n"
+                "  else if (which == 2) gl_FragColor = vec4(matrixCompMult(a, mat2x3(v2.xyz, "
+                "v3.xyz))[1], outerProduct(v0.xy, v1.xyz)[2][1]);\n"
+                "  else if (which == 3) gl_FragColor = vec4(a * v3.xy, 0.0);\n"
+                "  else gl_FragColor = vec4(v3.xyz * a, 0.0, mat4(v0, v1, v2, v3)[2][3]);\n"
+                "}\n");
   ASSERT_TRUE(sh.ok()) << sh.log;
   std::mt19937 rng(11);
   std::uniform_real_distribution<float> d(-3, 3);
@@ -283,7 +509,8 @@ TEST(BuiltinMatrix, MatchDoubleReference) {
           // transpose(a)[2] = row 2 of a; transpose(b)[1] = row 1 of b, then .zx.
           want[0] = A[0][2], want[1] = A[1][2], want[2] = B[2][1], want[3] = B[0][1];
         } else if (which == 2) {
-          // matrixCompMult(a, m)[1] where m's column 1 is v3.xyz; outerProduct(c, r)[j][i] = c[i] * r[j].
+          // matrixCompMult(a, m)[1] where m's column 1 is v3.xyz; outerProduct(c, r)[j][i] = c[i] *
+          // r[j].
           want[0] = A[1][0] * x[3][0], want[1] = A[1][1] * x[3][1], want[2] = A[1][2] * x[3][2];
           want[3] = double(x[0][1]) * x[1][2];
         } else if (which == 3) {
@@ -305,20 +532,19 @@ TEST(BuiltinMatrix, MatchDoubleReference) {
 
 // §8.6 vector relational functions.
 TEST(BuiltinRelational, MatchReference) {
-  LaneShader sh(
-      "varying vec4 v0, v1;\n"
-      "uniform int which;\n"
-      "void main() {\n"
-      "  ivec4 ia = ivec4(v0), ib = ivec4(v1);\n"
-      "  if (which == 0) gl_FragColor = vec4(lessThan(v0, v1));\n"
-      "  else if (which == 1) gl_FragColor = vec4(lessThanEqual(ia, ib));\n"
-      "  else if (which == 2) gl_FragColor = vec4(greaterThan(v0, v1));\n"
-      "  else if (which == 3) gl_FragColor = vec4(greaterThanEqual(ia, ib));\n"
-      "  else if (which == 4) gl_FragColor = vec4(equal(ia, ib));\n"
-      "  else if (which == 5) gl_FragColor = vec4(notEqual(v0, v1));\n"
-      "  else gl_FragColor = vec4(any(lessThan(v0, v1)), all(lessThan(v0, v1)),\n"
-      "                           any(not(equal(ia, ib))), all(not(equal(ia, ib))));\n"
-      "}\n");
+  LaneShader sh("varying vec4 v0, v1;\n"
+                "uniform int which;\n"
+                "void main() {\n"
+                "  ivec4 ia = ivec4(v0), ib = ivec4(v1);\n"
+                "  if (which == 0) gl_FragColor = vec4(lessThan(v0, v1));\n"
+                "  else if (which == 1) gl_FragColor = vec4(lessThanEqual(ia, ib));\n"
+                "  else if (which == 2) gl_FragColor = vec4(greaterThan(v0, v1));\n"
+                "  else if (which == 3) gl_FragColor = vec4(greaterThanEqual(ia, ib));\n"
+                "  else if (which == 4) gl_FragColor = vec4(equal(ia, ib));\n"
+                "  else if (which == 5) gl_FragColor = vec4(notEqual(v0, v1));\n"
+                "  else gl_FragColor = vec4(any(lessThan(v0, v1)), all(lessThan(v0, v1)),\n"
+                "                           any(not(equal(ia, ib))), all(not(equal(ia, ib))));\n"
+                "}\n");
   ASSERT_TRUE(sh.ok()) << sh.log;
   std::mt19937 rng(3);
   std::uniform_int_distribution<int> d(-2, 2);
@@ -339,9 +565,11 @@ TEST(BuiltinRelational, MatchReference) {
         float want[4];
         bool any_lt = false, all_lt = true, any_ne = false, all_ne = true;
         for (size_t k = 0; k < 4; ++k) {
-          const bool r[6] = {a[k] < b[k], a[k] <= b[k], a[k] > b[k], a[k] >= b[k], a[k] == b[k], a[k] != b[k]};
+          const bool r[6] = {a[k]<b[k], a[k] <= b[k], a[k]> b[k], a[k] >= b[k], a[k] == b[k],
+                             a[k] != b[k]};
           if (which < 6) want[k] = r[which] ? 1.0f : 0.0f;
-          any_lt = any_lt || r[0], all_lt = all_lt && r[0], any_ne = any_ne || r[5], all_ne = all_ne && r[5];
+          any_lt = any_lt || r[0], all_lt = all_lt && r[0], any_ne = any_ne || r[5],
+          all_ne = all_ne && r[5];
         }
         if (which == 6) want[0] = any_lt, want[1] = all_lt, want[2] = any_ne, want[3] = all_ne;
         for (size_t k = 0; k < 4; ++k)
@@ -354,8 +582,9 @@ TEST(BuiltinRelational, MatchReference) {
 // §8.8 derivatives over 2x2 quads: coarse, dFdx from the quad's upper row and dFdy from its
 // left column, the same for the four fragments.
 TEST(BuiltinDerivatives, FromQuadNeighbours) {
-  LaneShader sh("varying vec4 v0;\nvoid main() {\n"
-                "  gl_FragColor = vec4(dFdx(v0.x), dFdy(v0.x), fwidth(v0.y), dFdx(v0.z * v0.z));\n}\n");
+  LaneShader sh(
+      "varying vec4 v0;\nvoid main() {\n"
+      "  gl_FragColor = vec4(dFdx(v0.x), dFdy(v0.x), fwidth(v0.y), dFdx(v0.z * v0.z));\n}\n");
   ASSERT_TRUE(sh.ok()) << sh.log;
   std::mt19937 rng(5);
   std::uniform_real_distribution<float> d(-10, 10);

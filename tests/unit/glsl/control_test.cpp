@@ -41,8 +41,9 @@ void check(const std::string& src, const Ref& ref, unsigned seed = 1, float lo =
       if ((kill >> lane) & 1) continue;
       const Vec4 want = ref(in[lane]);
       for (size_t k = 0; k < 4; ++k)
-        ASSERT_EQ(out[lane][k], want[k]) << "level " << level_name(l) << ", lane " << lane
-                                         << ", component " << k << "\n" << src;
+        ASSERT_EQ(out[lane][k], want[k])
+            << "level " << level_name(l) << ", lane " << lane << ", component " << k << "\n"
+            << src;
     }
   }
 }
@@ -173,19 +174,20 @@ TEST(ControlFlow, EarlyReturnsFromFunctionsAndMain) {
 
 TEST(ControlFlow, DiscardSetsTheKillMask) {
   uint64_t kill = 0;
-  check("varying vec4 v0;\n"
-        "void main() {\n"
-        "  gl_FragColor = v0;\n"
-        "  for (int i = 0; i < 4; i++)\n"
-        "    if (v0[i] < -6.0) discard;\n"
-        "  gl_FragColor.x = 1.0;\n"
-        "}\n",
-        [](const std::array<Vec4, 4>& in) {
-          Vec4 r = in[0];
-          r[0] = 1;
-          return r;
-        },
-        3, -8, 8, {}, &kill);
+  check(
+      "varying vec4 v0;\n"
+      "void main() {\n"
+      "  gl_FragColor = v0;\n"
+      "  for (int i = 0; i < 4; i++)\n"
+      "    if (v0[i] < -6.0) discard;\n"
+      "  gl_FragColor.x = 1.0;\n"
+      "}\n",
+      [](const std::array<Vec4, 4>& in) {
+        Vec4 r = in[0];
+        r[0] = 1;
+        return r;
+      },
+      3, -8, 8, {}, &kill);
   const auto in = inputs(3, -8, 8);
   for (size_t lane = 0; lane < 64; ++lane) {
     bool k = false;
@@ -197,33 +199,35 @@ TEST(ControlFlow, DiscardSetsTheKillMask) {
 
 TEST(ControlFlow, UniformBranchesAndLoops) {
   for (int mode = 0; mode < 3; ++mode) {
-    check("varying vec4 v0;\n"
-          "uniform int mode;\n"
-          "uniform int n;\n"
-          "void main() {\n"
-          "  vec4 r = vec4(0.0);\n"
-          "  if (mode == 0) r = v0 * 2.0;\n"
-          "  else if (mode == 1) r = -v0;\n"
-          "  else for (int i = 0; i < n; i++) r += v0;\n"
-          "  gl_FragColor = r;\n"
-          "}\n",
-          [mode](const std::array<Vec4, 4>& in) {
-            Vec4 r{0, 0, 0, 0};
-            for (size_t k = 0; k < 4; ++k) {
-              if (mode == 0)
-                r[k] = in[0][k] * 2;
-              else if (mode == 1)
-                r[k] = -in[0][k];
-              else
-                for (int i = 0; i < 5; i++)
-                  r[k] += in[0][k];
-            }
-            return r;
-          },
-          4, -8, 8, [mode](LaneShader& sh) {
-            sh.pipe->set_uniform("mode", {static_cast<double>(mode)});
-            sh.pipe->set_uniform("n", {5});
-          });
+    check(
+        "varying vec4 v0;\n"
+        "uniform int mode;\n"
+        "uniform int n;\n"
+        "void main() {\n"
+        "  vec4 r = vec4(0.0);\n"
+        "  if (mode == 0) r = v0 * 2.0;\n"
+        "  else if (mode == 1) r = -v0;\n"
+        "  else for (int i = 0; i < n; i++) r += v0;\n"
+        "  gl_FragColor = r;\n"
+        "}\n",
+        [mode](const std::array<Vec4, 4>& in) {
+          Vec4 r{0, 0, 0, 0};
+          for (size_t k = 0; k < 4; ++k) {
+            if (mode == 0)
+              r[k] = in[0][k] * 2;
+            else if (mode == 1)
+              r[k] = -in[0][k];
+            else
+              for (int i = 0; i < 5; i++)
+                r[k] += in[0][k];
+          }
+          return r;
+        },
+        4, -8, 8,
+        [mode](LaneShader& sh) {
+          sh.pipe->set_uniform("mode", {static_cast<double>(mode)});
+          sh.pipe->set_uniform("n", {5});
+        });
   }
 }
 
@@ -262,7 +266,9 @@ TEST(ControlFlow, IterationLimitStopsRunawayLoops) {
         "  while (v0.x < 100.0) { x += 1.0; }\n"
         "  gl_FragColor = vec4(x);\n"
         "}\n",
-        [](const std::array<Vec4, 4>&) { return Vec4{65535, 65535, 65535, 65535}; });
+        [](const std::array<Vec4, 4>&) {
+          return Vec4{65535, 65535, 65535, 65535};
+        });
   LaneShader sh("varying vec4 v0;\n"
                 "void main() {\n"
                 "  float x = 0.0;\n"

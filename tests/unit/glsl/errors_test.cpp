@@ -22,21 +22,23 @@ TEST(GlslErrors, CompileErrorsNameTheLine) {
     const char* where;
   };
   const Case cases[] = {
-      {"void main() {\n  gl_FragColor = vec4(1.0)\n}\n", "0:3"},            // missing ;
-      {"void main() {\n\n  gl_FragColor = undeclared;\n}\n", "0:3"},       // unknown name
+      {"void main() {\n  gl_FragColor = vec4(1.0)\n}\n", "0:3"},     // missing ;
+      {"void main() {\n\n  gl_FragColor = undeclared;\n}\n", "0:3"}, // unknown name
       {"void main() {\n  vec3 v = vec4(1.0);\n  gl_FragColor = vec4(v, 1.0);\n}\n", "0:2"},
       {"void main() {\n  float f = 1.0;\n  f.xyz = vec3(1.0);\n}\n", "0:3"}, // bad swizzle
-      {"void main() {\n  break;\n}\n", "0:2"},                              // break outside a loop
+      {"void main() {\n  break;\n}\n", "0:2"},                               // break outside a loop
   };
   for (const Case& c : cases) {
     auto f = fs(c.src);
     EXPECT_FALSE(f->compiled()) << c.src;
     EXPECT_NE(f->info_log().find(std::string("ERROR: ") + c.where), std::string::npos)
-        << c.src << "\n" << f->info_log();
+        << c.src << "\n"
+        << f->info_log();
   }
   // Several strings: the log names the string (GLSL 1.10 §3.2).
-  auto f = glsl::Shader::compile(glsl::ShaderStage::Fragment,
-                                 {"uniform vec4 c;\n", "void main() {\n  gl_FragColor = c +;\n}\n"});
+  auto f =
+      glsl::Shader::compile(glsl::ShaderStage::Fragment,
+                            {"uniform vec4 c;\n", "void main() {\n  gl_FragColor = c +;\n}\n"});
   EXPECT_FALSE(f->compiled());
   EXPECT_NE(f->info_log().find("1:2"), std::string::npos) << f->info_log();
 }
@@ -44,7 +46,8 @@ TEST(GlslErrors, CompileErrorsNameTheLine) {
 TEST(GlslErrors, OnlyGlsl110And120) {
   EXPECT_TRUE(fs("#version 110\nvoid main() { gl_FragColor = vec4(1.0); }\n")->compiled());
   EXPECT_TRUE(fs("#version 120\nvoid main() { gl_FragColor = vec4(1.0); }\n")->compiled());
-  for (const char* v : {"#version 130\n", "#version 100\n", "#version 300 es\n", "#version 150\n"}) {
+  for (const char* v :
+       {"#version 130\n", "#version 100\n", "#version 300 es\n", "#version 150\n"}) {
     auto f = fs(std::string(v) + "void main() { }\n");
     EXPECT_FALSE(f->compiled()) << v;
     EXPECT_FALSE(f->info_log().empty()) << v;
@@ -58,24 +61,30 @@ TEST(GlslErrors, LinkErrors) {
   // No main.
   EXPECT_FALSE(link({fs("void f() {}\n")})->linked());
   // Varyings of different types; a varying read but never written.
-  EXPECT_FALSE(link({vs("varying vec3 a;\nvoid main() { a = vec3(1.0); gl_Position = gl_Vertex; }\n"),
-                     fs("varying vec4 a;\nvoid main() { gl_FragColor = a; }\n")})->linked());
+  EXPECT_FALSE(
+      link({vs("varying vec3 a;\nvoid main() { a = vec3(1.0); gl_Position = gl_Vertex; }\n"),
+            fs("varying vec4 a;\nvoid main() { gl_FragColor = a; }\n")})
+          ->linked());
   EXPECT_FALSE(link({vs("varying vec4 a;\nvoid main() { gl_Position = gl_Vertex; }\n"),
-                     fs("varying vec4 a;\nvoid main() { gl_FragColor = a; }\n")})->linked());
+                     fs("varying vec4 a;\nvoid main() { gl_FragColor = a; }\n")})
+                   ->linked());
   // Uniforms of different types in the two stages.
   EXPECT_FALSE(link({vs("uniform vec3 u;\nvoid main() { gl_Position = vec4(u, 1.0); }\n"),
-                     fs("uniform vec4 u;\nvoid main() { gl_FragColor = u; }\n")})->linked());
+                     fs("uniform vec4 u;\nvoid main() { gl_FragColor = u; }\n")})
+                   ->linked());
   // A shader that did not compile.
   EXPECT_FALSE(link({fs("void main() { oops }\n")})->linked());
   // Two main functions in one stage.
   EXPECT_FALSE(link({fs("void main() { gl_FragColor = vec4(1.0); }\n"),
-                     fs("void main() { gl_FragColor = vec4(0.0); }\n")})->linked());
-  // Too many varying components for MAX_VARYING_FLOATS.
-  EXPECT_FALSE(link({vs("varying float a[70];\nvoid main() { for (int i = 0; i < 70; i++) a[i] = 1.0;"
-                        " gl_Position = gl_Vertex; }\n"),
-                     fs("varying float a[70];\nvoid main() { float s = 0.0;"
-                        " for (int i = 0; i < 70; i++) s += a[i]; gl_FragColor = vec4(s); }\n")})
+                     fs("void main() { gl_FragColor = vec4(0.0); }\n")})
                    ->linked());
+  // Too many varying components for MAX_VARYING_FLOATS.
+  EXPECT_FALSE(
+      link({vs("varying float a[70];\nvoid main() { for (int i = 0; i < 70; i++) a[i] = 1.0;"
+               " gl_Position = gl_Vertex; }\n"),
+            fs("varying float a[70];\nvoid main() { float s = 0.0;"
+               " for (int i = 0; i < 70; i++) s += a[i]; gl_FragColor = vec4(s); }\n")})
+          ->linked());
   // Every failed link says why.
   auto p = link({fs("void f() {}\n")});
   EXPECT_FALSE(p->info_log().empty());
@@ -97,10 +106,12 @@ TEST(GlslErrors, GarbageNeverCrashes) {
       "float f(float x) { for (int i = 0; i < 3; i++) x = x * 0.5 + c[i].x; return x; }\n"
       "void main() {\n  vec4 t = texture2D(s, uv);\n  if (t.x > 0.5) discard;\n"
       "  gl_FragColor = t * f(uv.y) + c[int(uv.x)];\n}\n";
-  const char* tokens[] = {"void", "main", "(", ")", "{", "}", ";", "float", "vec4", "=", "+",
-                          "gl_FragColor", "if", "for", "while", "int", "i", "[", "]", "1.0",
-                          "return", "discard", ".xyzw", "uniform", "#define", "\\\n", "#if",
-                          "struct", "mat3", "*", "texture2D", ",", "0", "sampler2D", "#endif"};
+  const char* tokens[] = {"void",      "main",  "(",      ")",         "{",     "}",
+                          ";",         "float", "vec4",   "=",         "+",     "gl_FragColor",
+                          "if",        "for",   "while",  "int",       "i",     "[",
+                          "]",         "1.0",   "return", "discard",   ".xyzw", "uniform",
+                          "#define",   "\\\n",  "#if",    "struct",    "mat3",  "*",
+                          "texture2D", ",",     "0",      "sampler2D", "#endif"};
   int compiled = 0;
   for (int iter = 0; iter < 300; ++iter) {
     std::string src;
@@ -132,7 +143,9 @@ TEST(GlslErrors, GarbageNeverCrashes) {
       auto p = glsl::Program::link({f}, {});
       if (p->linked()) {
         Pipeline pipe(*p);
-        std::vector<std::vector<float>> in(4, std::vector<float>(shader::kNumFragmentInputs * 4, 0.5f)), out;
+        std::vector<std::vector<float>> in(
+            4, std::vector<float>(shader::kNumFragmentInputs * 4, 0.5f)),
+            out;
         pipe.run_fragments(1, in, out);
       }
     } else {

@@ -29,13 +29,16 @@ TEST(GlslangGaps, TextureLodInVertexShaders) {
          " + texture2DProjLod(s, vec3(0.5), 0.0) + textureCubeLod(sc, vec3(1.0), 0.0); }\n");
   EXPECT_TRUE(v->compiled()) << v->info_log();
   // ... and the fragment shader still has no Lod forms (GLSL 1.20 §8.7).
-  EXPECT_FALSE(fs("uniform sampler2D s;\nvoid main() { gl_FragColor = texture2DLod(s, vec2(0.5), 1.0); }\n")->compiled());
+  EXPECT_FALSE(
+      fs("uniform sampler2D s;\nvoid main() { gl_FragColor = texture2DLod(s, vec2(0.5), 1.0); }\n")
+          ->compiled());
 }
 
 // glslang refuses backslash line continuation below GLSL 1.30 unless all its errors are
 // relaxed; Pineda joins the lines itself and keeps the line numbers.
 TEST(GlslangGaps, LineContinuation) {
-  auto f = fs("#define COLOR(x) \\\n  vec4(x, \\\n  0.0, 0.0, 1.0)\nvoid main() { gl_FragColor = COLOR(1.0); }\n");
+  auto f = fs("#define COLOR(x) \\\n  vec4(x, \\\n  0.0, 0.0, 1.0)\nvoid main() { gl_FragColor = "
+              "COLOR(1.0); }\n");
   EXPECT_TRUE(f->compiled()) << f->info_log();
   f = fs("#define A \\\n  1.0\nvoid main() {\n  gl_FragColor = vec4(A)\n}\n");
   EXPECT_FALSE(f->compiled());
@@ -48,11 +51,11 @@ TEST(GlslangGaps, MatrixConstantFolding) {
   LaneShader sh("#version 120\n"
                 "const mat2 m = mat2(1.0, 2.0, 3.0, 4.0);\n"
                 "void main() {\n"
-                "  float a[int(transpose(m)[0][1])];\n"                                 // 3
-                "  float b[int(matrixCompMult(m, m)[1][1]) - 10];\n"                   // 6
-                "  float c[(vec2(1.0, 2.0) == vec2(1.0, 2.0)) == true ? 2 : 1];\n"     // 2
+                "  float a[int(transpose(m)[0][1])];\n"                            // 3
+                "  float b[int(matrixCompMult(m, m)[1][1]) - 10];\n"               // 6
+                "  float c[(vec2(1.0, 2.0) == vec2(1.0, 2.0)) == true ? 2 : 1];\n" // 2
                 "  const mat2 t = transpose(m);\n"
-                "  gl_FragColor = vec4(a.length(), b.length(), c.length(), t[1][0]);\n"  // 2
+                "  gl_FragColor = vec4(a.length(), b.length(), c.length(), t[1][0]);\n" // 2
                 "}\n");
   ASSERT_TRUE(sh.ok()) << sh.log;
   const auto out = sh.run(std::vector<std::array<Vec4, 4>>(4));
@@ -61,9 +64,13 @@ TEST(GlslangGaps, MatrixConstantFolding) {
   EXPECT_EQ(out[0][2], 2.0f);
   EXPECT_EQ(out[0][3], 2.0f);
   // An array size of a non-integer type stays an error.
-  EXPECT_FALSE(fs("#version 120\nvoid main() { float a[int(1.0) + 0.5]; gl_FragColor = vec4(0.0); }\n")->compiled());
+  EXPECT_FALSE(
+      fs("#version 120\nvoid main() { float a[int(1.0) + 0.5]; gl_FragColor = vec4(0.0); }\n")
+          ->compiled());
   // So does the sequence operator, which is not a constant expression.
-  EXPECT_FALSE(fs("#version 120\nvoid main() { float a[(1, 2)]; gl_FragColor = vec4(a.length()); }\n")->compiled());
+  EXPECT_FALSE(
+      fs("#version 120\nvoid main() { float a[(1, 2)]; gl_FragColor = vec4(a.length()); }\n")
+          ->compiled());
 }
 
 // glslang defines a GL_ARB_*/GL_EXT_* macro for every extension it knows; Pineda supports
@@ -71,29 +78,36 @@ TEST(GlslangGaps, MatrixConstantFolding) {
 TEST(GlslangGaps, ExtensionMacros) {
   for (const char* ext : {"GL_ARB_gpu_shader5", "GL_ARB_texture_rectangle", "GL_EXT_gpu_shader4",
                           "GL_ARB_shader_texture_lod", "GL_ARB_separate_shader_objects"}) {
-    auto f = fs(std::string("#ifdef ") + ext + "\n#error defined\n#endif\nvoid main() { gl_FragColor = vec4(1.0); }\n");
+    auto f = fs(std::string("#ifdef ") + ext +
+                "\n#error defined\n#endif\nvoid main() { gl_FragColor = vec4(1.0); }\n");
     EXPECT_TRUE(f->compiled()) << ext << ": " << f->info_log();
-    f = fs(std::string("#extension ") + ext + " : require\nvoid main() { gl_FragColor = vec4(1.0); }\n");
+    f = fs(std::string("#extension ") + ext +
+           " : require\nvoid main() { gl_FragColor = vec4(1.0); }\n");
     EXPECT_FALSE(f->compiled()) << ext;
     EXPECT_NE(f->info_log().find(ext), std::string::npos) << f->info_log();
   }
   // Names that merely start the same way are left alone.
-  EXPECT_TRUE(fs("#define GL_ARB_gpu_shader5_x 1\nvoid main() { gl_FragColor = vec4(1.0); }\n")->compiled() ==
-              false); // GL_ names are reserved (GLSL 1.10 §3.3)
+  EXPECT_TRUE(fs("#define GL_ARB_gpu_shader5_x 1\nvoid main() { gl_FragColor = vec4(1.0); }\n")
+                  ->compiled() == false); // GL_ names are reserved (GLSL 1.10 §3.3)
 }
 
 // Writing both gl_FragColor and gl_FragData is a compile error, dead code included (glslang
 // only refuses it when linking, and not in dead code).
 TEST(GlslangGaps, FragColorAndFragData) {
-  EXPECT_FALSE(fs("void main() { gl_FragColor = vec4(1.0); gl_FragData[0] = vec4(1.0); }\n")->compiled());
-  EXPECT_FALSE(fs("void main() { gl_FragColor = vec4(1.0); if (false) gl_FragData[1] = vec4(1.0); }\n")->compiled());
-  EXPECT_TRUE(fs("void main() { gl_FragData[0] = vec4(1.0); gl_FragData[1] = vec4(0.5); }\n")->compiled());
+  EXPECT_FALSE(
+      fs("void main() { gl_FragColor = vec4(1.0); gl_FragData[0] = vec4(1.0); }\n")->compiled());
+  EXPECT_FALSE(
+      fs("void main() { gl_FragColor = vec4(1.0); if (false) gl_FragData[1] = vec4(1.0); }\n")
+          ->compiled());
+  EXPECT_TRUE(
+      fs("void main() { gl_FragData[0] = vec4(1.0); gl_FragData[1] = vec4(0.5); }\n")->compiled());
 }
 
 // glslang accepts any number of samplers; GL 2.1 §2.15.4 limits those a program uses.
 TEST(GlslangGaps, TooManySamplers) {
-  auto f = fs("uniform sampler2D s[20];\nvoid main() {\n  vec4 c = vec4(0.0);\n"
-              "  for (int i = 0; i < 20; i++) c += texture2D(s[i], vec2(0.5));\n  gl_FragColor = c;\n}\n");
+  auto f = fs(
+      "uniform sampler2D s[20];\nvoid main() {\n  vec4 c = vec4(0.0);\n"
+      "  for (int i = 0; i < 20; i++) c += texture2D(s[i], vec2(0.5));\n  gl_FragColor = c;\n}\n");
   ASSERT_TRUE(f->compiled()) << f->info_log();
   auto p = link({f});
   EXPECT_FALSE(p->linked());
@@ -109,12 +123,14 @@ TEST(GlslangGaps, GlobalInitializersAcrossShaders) {
   auto b = vs("float g = 2.0;\nvoid f() {}\n");
   auto c = vs("float g = 1.0;\nvoid f() {}\n");
   auto d = vs("uniform float u;\nfloat g = u * 2.0;\nvoid f() {}\n");
-  auto e = vs("uniform float u;\nfloat g = u * 2.0;\nvoid main() { gl_Position = gl_Vertex * g; }\n");
+  auto e =
+      vs("uniform float u;\nfloat g = u * 2.0;\nvoid main() { gl_Position = gl_Vertex * g; }\n");
   EXPECT_FALSE(link({a, b})->linked());
-  EXPECT_TRUE(link({a, c})->linked()); // the same constant: one variable
+  EXPECT_TRUE(link({a, c})->linked());  // the same constant: one variable
   EXPECT_FALSE(link({d, e})->linked()); // non-constant initializers in two shaders
   // Uniform initializers must match between the stages too.
-  auto v = vs("#version 120\nuniform float u = 1.0;\nvoid main() { gl_Position = gl_Vertex * u; }\n");
+  auto v =
+      vs("#version 120\nuniform float u = 1.0;\nvoid main() { gl_Position = gl_Vertex * u; }\n");
   auto f = fs("#version 120\nuniform float u = 2.0;\nvoid main() { gl_FragColor = vec4(u); }\n");
   EXPECT_FALSE(link({v, f})->linked());
 }
@@ -123,14 +139,20 @@ TEST(GlslangGaps, GlobalInitializersAcrossShaders) {
 // out parameters, refuses gl_TexCoord sized differently in the two stages and calls to
 // functions without bodies in dead code; none of that is GLSL 1.10.
 TEST(GlslangGaps, FoundWithPiglit) {
-  EXPECT_FALSE(vs("void main() { gl_Position = gl_Vertex; gl_TexCoord[gl_MaxTextureCoords] = vec4(1.0); }\n")->compiled());
-  EXPECT_FALSE(fs("struct S { sampler2D t; };\nvoid f(out S s) {}\nvoid main() { gl_FragColor = vec4(1.0); }\n")->compiled());
-  auto v = vs("varying vec4 gl_TexCoord[2];\nvoid main() { gl_TexCoord[0] = vec4(1.0); gl_Position = gl_Vertex; }\n");
+  EXPECT_FALSE(
+      vs("void main() { gl_Position = gl_Vertex; gl_TexCoord[gl_MaxTextureCoords] = vec4(1.0); }\n")
+          ->compiled());
+  EXPECT_FALSE(fs("struct S { sampler2D t; };\nvoid f(out S s) {}\nvoid main() { gl_FragColor = "
+                  "vec4(1.0); }\n")
+                   ->compiled());
+  auto v = vs("varying vec4 gl_TexCoord[2];\nvoid main() { gl_TexCoord[0] = vec4(1.0); gl_Position "
+              "= gl_Vertex; }\n");
   auto f = fs("varying vec4 gl_TexCoord[3];\nvoid main() { gl_FragColor = gl_TexCoord[0]; }\n");
   EXPECT_TRUE(link({v, f})->linked());
   auto g = fs("void missing();\nvoid main() { gl_FragColor = vec4(1.0); if (false) missing(); }\n");
   EXPECT_TRUE(link({g})->linked());
-  auto h = fs("void missing();\nuniform bool b;\nvoid main() { gl_FragColor = vec4(1.0); if (b) missing(); }\n");
+  auto h = fs("void missing();\nuniform bool b;\nvoid main() { gl_FragColor = vec4(1.0); if (b) "
+              "missing(); }\n");
   EXPECT_FALSE(link({h})->linked());
 }
 

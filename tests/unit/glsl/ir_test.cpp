@@ -102,7 +102,8 @@ TEST(ShaderIr, DeadCodeRegionsAndLoopsGo) {
   const ValueId lp = f.phi(Type::Float);
   l.phis.push_back({lp, x, kNoValue});
   const ValueId next = f.emit(l.body, Op::Add, Type::Float, lp, f.const_f(1.0f));
-  f.emit(l.body, Op::ExitIfNone, Type::Bool, f.emit(l.body, Op::Lt, Type::Bool, next, f.const_f(10.0f)));
+  f.emit(l.body, Op::ExitIfNone, Type::Bool,
+         f.emit(l.body, Op::Lt, Type::Bool, next, f.const_f(10.0f)));
   l.phis[0].next = next;
   f.body.push_back({NodeKind::Loop, li});
   f.emit_imm(f.body, Op::StoreOutput, Type::Float, 0, 0, 0, x);
@@ -117,7 +118,8 @@ TEST(ShaderIr, CommonSubexpressionsMerge) {
   const ValueId x = f.input(Type::Float, 0), y = f.input(Type::Float, 1);
   const ValueId a = f.emit(f.body, Op::Mul, Type::Float, x, y);
   const ValueId b = f.emit(f.body, Op::Mul, Type::Float, y, x); // commutative
-  f.emit_imm(f.body, Op::StoreOutput, Type::Float, 0, 0, 0, f.emit(f.body, Op::Add, Type::Float, a, b));
+  f.emit_imm(f.body, Op::StoreOutput, Type::Float, 0, 0, 0,
+             f.emit(f.body, Op::Add, Type::Float, a, b));
   optimize(f);
   EXPECT_EQ(count_insts(f), 3) << print(f); // one Mul, the Add, the store
 }
@@ -132,10 +134,11 @@ TEST(ShaderIr, VerifierCatchesUseBeforeDefinition) {
 }
 
 TEST(ShaderIr, PrinterShowsStructure) {
-  auto p = link_ir("", "varying vec4 v0;\nvoid main() {\n"
-                       "  vec4 c = v0;\n"
-                       "  for (int i = 0; i < int(v0.w); i++) { if (c.x > 1.0) break; c.x += 0.5; }\n"
-                       "  gl_FragColor = c;\n}\n");
+  auto p =
+      link_ir("", "varying vec4 v0;\nvoid main() {\n"
+                  "  vec4 c = v0;\n"
+                  "  for (int i = 0; i < int(v0.w); i++) { if (c.x > 1.0) break; c.x += 0.5; }\n"
+                  "  gl_FragColor = c;\n}\n");
   const std::string& t = p->ir_text();
   EXPECT_GE(count(t, "loop {"), 1) << t;
   EXPECT_GE(count(t, "ExitIfNone"), 1) << t;
@@ -143,9 +146,10 @@ TEST(ShaderIr, PrinterShowsStructure) {
 }
 
 TEST(ShaderIr, FunctionsAreInlinedAndConstantsFolded) {
-  auto p = link_ir("", "float sq(float x) { return x * x; }\n"
-                       "float twice(float x) { return sq(x) + sq(x); }\n"
-                       "void main() { gl_FragColor = vec4(twice(3.0), sq(2.0) * 0.5, 0.0, 1.0); }\n");
+  auto p =
+      link_ir("", "float sq(float x) { return x * x; }\n"
+                  "float twice(float x) { return sq(x) + sq(x); }\n"
+                  "void main() { gl_FragColor = vec4(twice(3.0), sq(2.0) * 0.5, 0.0, 1.0); }\n");
   const std::string& t = p->ir_text();
   // Everything folds to constants: no arithmetic left, the outputs are stored from splats.
   EXPECT_EQ(count(t, "Mul."), 0) << t;
@@ -187,8 +191,10 @@ TEST(ShaderIr, OnlyWhatIsReadIsComputed) {
                    "  float f = gl_NormalScale;\n"
                    "  gl_FragColor = vec4(uv.x);\n}\n");
   const auto& outs = p->vertex()->outputs_written();
-  EXPECT_EQ(std::count_if(outs.begin(), outs.end(), [](int c) { return c / 4 >= kOutVarying0; }), 1);
-  EXPECT_EQ(std::count_if(outs.begin(), outs.end(), [](int c) { return c / 4 == kOutTexCoord0; }), 0);
+  EXPECT_EQ(std::count_if(outs.begin(), outs.end(), [](int c) { return c / 4 >= kOutVarying0; }),
+            1);
+  EXPECT_EQ(std::count_if(outs.begin(), outs.end(), [](int c) { return c / 4 == kOutTexCoord0; }),
+            0);
   EXPECT_EQ(p->fragment()->inputs_read().size(), 1u);
   for (const auto& b : p->builtin_uniforms())
     EXPECT_NE(b.name, "gl_NormalScale");
@@ -200,7 +206,7 @@ TEST(ShaderIr, FoldedConstantsEqualTheEngine) {
   // eval_lane_op (the folder) and the engine compute the same bits for every lane op.
   Function f;
   const float xs[] = {-3.7f, -1.0f, -0.25f, 0.0f, 0.5f, 1.0f, 2.5f, 100.0f};
-  const Op ops[] = {Op::Sin, Op::Cos, Op::Tan, Op::Atan, Op::Exp2, Op::Log2, Op::Exp,
+  const Op ops[] = {Op::Sin, Op::Cos,  Op::Tan, Op::Atan,  Op::Exp2,  Op::Log2, Op::Exp,
                     Op::Log, Op::Sqrt, Op::Rsq, Op::Floor, Op::Fract, Op::Sign, Op::Abs};
   int out = 0;
   std::vector<uint32_t> folded;
@@ -214,7 +220,8 @@ TEST(ShaderIr, FoldedConstantsEqualTheEngine) {
       folded.push_back(bits);
       const ValueId in = f.input(Type::Float, 0);
       const ValueId k = f.emit(f.body, Op::Add, Type::Float, in, f.const_f(x));
-      f.emit_imm(f.body, Op::StoreOutput, Type::Float, out++, 0, 0, f.emit(f.body, op, Type::Float, k));
+      f.emit_imm(f.body, Op::StoreOutput, Type::Float, out++, 0, 0,
+                 f.emit(f.body, op, Type::Float, k));
     }
   std::string err;
   auto exe = Executable::build(f, Stage::Vertex, &err);
@@ -233,7 +240,8 @@ TEST(ShaderIr, FoldedConstantsEqualTheEngine) {
   b.out = outs.data();
   exe->run_vertices(prep, b, scratch.data());
   for (int i = 0; i < out; ++i)
-    EXPECT_EQ(std::bit_cast<uint32_t>(res[static_cast<size_t>(4 * i)]), folded[static_cast<size_t>(i)])
+    EXPECT_EQ(std::bit_cast<uint32_t>(res[static_cast<size_t>(4 * i)]),
+              folded[static_cast<size_t>(i)])
         << op_name(ops[i / 8]) << "(" << xs[i % 8] << ")";
 }
 

@@ -30,21 +30,20 @@ std::map<std::string, glsl::ActiveUniform> by_name(const glsl::Program& p) {
 }
 
 TEST(GlslReflection, UniformsNamesTypesSizes) {
-  auto p = link("",
-                "#version 120\n"
-                "struct Light { vec3 color; float power[3]; };\n"
-                "uniform Light lights[2];\n"
-                "uniform mat2x3 m;\n"
-                "uniform bvec3 flags;\n"
-                "uniform float weights[8];\n"
-                "uniform sampler2DShadow sh;\n"
-                "uniform vec4 unused;\n"
-                "void main() {\n"
-                "  float w = weights[0] + weights[5];\n"
-                "  vec3 c = lights[1].color * lights[0].power[2] + m[1] * w;\n"
-                "  if (flags.y) c += vec3(shadow2D(sh, c).x);\n"
-                "  gl_FragColor = vec4(c, 1.0);\n"
-                "}\n");
+  auto p = link("", "#version 120\n"
+                    "struct Light { vec3 color; float power[3]; };\n"
+                    "uniform Light lights[2];\n"
+                    "uniform mat2x3 m;\n"
+                    "uniform bvec3 flags;\n"
+                    "uniform float weights[8];\n"
+                    "uniform sampler2DShadow sh;\n"
+                    "uniform vec4 unused;\n"
+                    "void main() {\n"
+                    "  float w = weights[0] + weights[5];\n"
+                    "  vec3 c = lights[1].color * lights[0].power[2] + m[1] * w;\n"
+                    "  if (flags.y) c += vec3(shadow2D(sh, c).x);\n"
+                    "  gl_FragColor = vec4(c, 1.0);\n"
+                    "}\n");
   const auto u = by_name(*p);
   ASSERT_TRUE(u.count("weights[0]"));
   EXPECT_EQ(u.at("weights[0]").type, static_cast<GLenum>(GL_FLOAT));
@@ -123,16 +122,19 @@ TEST(GlslReflection, AttributeLocations) {
   // The engine reads the columns of basis from consecutive generic slots.
   const auto& in = p->vertex()->inputs_read();
   for (int col = 0; col < 3; ++col)
-    EXPECT_TRUE(std::find(in.begin(), in.end(), (shader::kInGeneric0 + basis + col) * 4) != in.end());
+    EXPECT_TRUE(std::find(in.begin(), in.end(), (shader::kInGeneric0 + basis + col) * 4) !=
+                in.end());
   // A binding that leaves no room for a matrix is a link error.
-  std::vector<std::shared_ptr<const glsl::Shader>> s{glsl::Shader::compile(glsl::ShaderStage::Vertex, {v}),
-                                                     glsl::Shader::compile(glsl::ShaderStage::Fragment, {f})};
+  std::vector<std::shared_ptr<const glsl::Shader>> s{
+      glsl::Shader::compile(glsl::ShaderStage::Vertex, {v}),
+      glsl::Shader::compile(glsl::ShaderStage::Fragment, {f})};
   EXPECT_FALSE(glsl::Program::link(s, {{"basis", 14}})->linked());
 }
 
 TEST(GlslReflection, UniformInitializers) {
-  auto p = link("", "#version 120\nuniform float f = 2.5;\nuniform ivec2 i = ivec2(3, -4);\n"
-                    "uniform bool b = true;\nvoid main() { gl_FragColor = vec4(f, i, float(b)); }\n");
+  auto p =
+      link("", "#version 120\nuniform float f = 2.5;\nuniform ivec2 i = ivec2(3, -4);\n"
+               "uniform bool b = true;\nvoid main() { gl_FragColor = vec4(f, i, float(b)); }\n");
   const auto u = by_name(*p);
   const auto& init = p->initial_uniforms();
   EXPECT_EQ(std::bit_cast<float>(init[static_cast<size_t>(u.at("f").word)]), 2.5f);

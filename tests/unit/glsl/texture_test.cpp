@@ -16,13 +16,14 @@ namespace {
 using shader::TexTarget;
 
 TestTexture checker(TexTarget t, int size) {
-  auto tex = TestTexture::make(t, size, t == TexTarget::Tex1D ? 1 : size, t == TexTarget::Tex3D ? size : 1,
-                               [&](int face, int x, int y, int z) -> std::array<float, 4> {
-                                 return {static_cast<float>(x) / static_cast<float>(size),
-                                         static_cast<float>(y) / static_cast<float>(size),
-                                         static_cast<float>(z + face) / static_cast<float>(size),
-                                         ((x + y + z) & 1) ? 1.0f : 0.25f};
-                               });
+  auto tex =
+      TestTexture::make(t, size, t == TexTarget::Tex1D ? 1 : size, t == TexTarget::Tex3D ? size : 1,
+                        [&](int face, int x, int y, int z) -> std::array<float, 4> {
+                          return {static_cast<float>(x) / static_cast<float>(size),
+                                  static_cast<float>(y) / static_cast<float>(size),
+                                  static_cast<float>(z + face) / static_cast<float>(size),
+                                  ((x + y + z) & 1) ? 1.0f : 0.25f};
+                        });
   tex.build_mipmaps();
   return tex;
 }
@@ -52,7 +53,8 @@ void expect_near4(const Vec4& got, const std::array<float, 4>& want, const std::
 // The implicit level of detail the test sampler computes (it mirrors fragment/shade.cpp).
 float quad_lambda(const std::array<Vec4, 4>* q, const float* s, const float* t, int w, int h) {
   (void)q;
-  const float dx0 = (s[3] - s[2]) * static_cast<float>(w), dy0 = (s[2] - s[0]) * static_cast<float>(w);
+  const float dx0 = (s[3] - s[2]) * static_cast<float>(w),
+              dy0 = (s[2] - s[0]) * static_cast<float>(w);
   const float dx1 = t ? (t[3] - t[2]) * static_cast<float>(h) : 0.0f;
   const float dy1 = t ? (t[2] - t[0]) * static_cast<float>(h) : 0.0f;
   const float rho = std::max(std::sqrt(dx0 * dx0 + dx1 * dx1), std::sqrt(dy0 * dy0 + dy1 * dy1));
@@ -74,11 +76,14 @@ const TexCase kTexCases[] = {
     {"texture2D", "sampler2D", "texture2D(s, v0.xy)", TexTarget::Tex2D, false, false, 0},
     {"texture2DBias", "sampler2D", "texture2D(s, v0.xy, v1.x)", TexTarget::Tex2D, false, false, 1},
     {"texture2DProj", "sampler2D", "texture2DProj(s, v0.xyw)", TexTarget::Tex2D, false, true, 0},
-    {"texture2DProj4", "sampler2D", "texture2DProj(s, vec4(v0.xy, 7.0, v0.w))", TexTarget::Tex2D, false, true, 0},
+    {"texture2DProj4", "sampler2D", "texture2DProj(s, vec4(v0.xy, 7.0, v0.w))", TexTarget::Tex2D,
+     false, true, 0},
     {"texture3D", "sampler3D", "texture3D(s, v0.xyz)", TexTarget::Tex3D, false, false, 0},
     {"textureCube", "samplerCube", "textureCube(s, v0.xyz)", TexTarget::Cube, false, false, 0},
-    {"shadow2D", "sampler2DShadow", "shadow2D(s, vec3(v0.xy, 0.5))", TexTarget::Tex2D, true, false, 0},
-    {"shadow1DProj", "sampler1DShadow", "shadow1DProj(s, vec4(v0.x, 0.0, 0.5, v0.w))", TexTarget::Tex1D, true, true, 0},
+    {"shadow2D", "sampler2DShadow", "shadow2D(s, vec3(v0.xy, 0.5))", TexTarget::Tex2D, true, false,
+     0},
+    {"shadow1DProj", "sampler1DShadow", "shadow1DProj(s, vec4(v0.x, 0.0, 0.5, v0.w))",
+     TexTarget::Tex1D, true, true, 0},
 };
 
 class TextureLookup : public ::testing::TestWithParam<TexCase> {};
@@ -94,10 +99,11 @@ TEST_P(TextureLookup, HandsTheSamplerWhatGlslSays) {
   sh.pipe->sampler.units[2] = checker(tc.target, size);
   if (tc.shadow) {
     // A depth texture: depth in the red channel.
-    sh.pipe->sampler.units[2] = TestTexture::make(tc.target, size, tc.target == TexTarget::Tex1D ? 1 : size, 1,
-                                                  [&](int, int x, int y, int) -> std::array<float, 4> {
-                                                    return {static_cast<float>(x + y) / (2.0f * static_cast<float>(size)), 0, 0, 1};
-                                                  });
+    sh.pipe->sampler.units[2] = TestTexture::make(
+        tc.target, size, tc.target == TexTarget::Tex1D ? 1 : size, 1,
+        [&](int, int x, int y, int) -> std::array<float, 4> {
+          return {static_cast<float>(x + y) / (2.0f * static_cast<float>(size)), 0, 0, 1};
+        });
   }
   ASSERT_TRUE(sh.pipe->set_uniform("s", {2}));
   const auto in = coords(17);
@@ -120,8 +126,10 @@ TEST_P(TextureLookup, HandsTheSamplerWhatGlslSays) {
       for (size_t k = 0; k < 4; ++k) {
         float lam = lambda;
         if (tc.lod == 1) lam += in[4 * q + k][1][0];
-        const auto want = sh.pipe->sampler.lookup(2, s[k], is1d ? 0.0f : t[k], r[k], lam, tc.shadow);
-        expect_near4(out[4 * q + k], want, std::string(tc.name) + " lane " + std::to_string(4 * q + k));
+        const auto want =
+            sh.pipe->sampler.lookup(2, s[k], is1d ? 0.0f : t[k], r[k], lam, tc.shadow);
+        expect_near4(out[4 * q + k], want,
+                     std::string(tc.name) + " lane " + std::to_string(4 * q + k));
       }
     }
   }
@@ -158,7 +166,8 @@ TEST(TextureLookup, VertexShaderLevels) {
       const auto a = pipe.sampler.lookup(0, pos[0], pos[1], 0, pos[2], false);
       const auto b = pipe.sampler.lookup(0, pos[1], pos[0], 0, 0, false);
       const float want = a[0] + b[0] * 10;
-      EXPECT_NEAR(out[v][static_cast<size_t>((shader::kOutVarying0) * 4 + k)], want, 1e-5) << "vertex " << v;
+      EXPECT_NEAR(out[v][static_cast<size_t>((shader::kOutVarying0)*4 + k)], want, 1e-5)
+          << "vertex " << v;
     }
   }
 }

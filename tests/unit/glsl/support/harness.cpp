@@ -119,13 +119,16 @@ void Pipeline::set_builtin_state() {
       put(0, 1.0f);
     } else {
       // GL 2.1 Table 6.9's initial lighting state, the rest zero.
-      const auto ends = [&](const char* s) { return b.name.size() >= std::strlen(s) &&
-                                                    b.name.compare(b.name.size() - std::strlen(s), std::string::npos, s) == 0; };
+      const auto ends = [&](const char* s) {
+        return b.name.size() >= std::strlen(s) &&
+               b.name.compare(b.name.size() - std::strlen(s), std::string::npos, s) == 0;
+      };
       const bool light0 = b.name.rfind("gl_LightSource[0]", 0) == 0;
       if (b.name.rfind("gl_LightSource[", 0) == 0) {
         if (ends(".ambient")) put(3, 1.0f);
         if (ends(".diffuse") || ends(".specular")) {
-          for (int k = 0; k < 3; ++k) put(k, light0 ? 1.0f : 0.0f);
+          for (int k = 0; k < 3; ++k)
+            put(k, light0 ? 1.0f : 0.0f);
           put(3, 1.0f);
         }
         if (ends(".position")) put(2, 1.0f);
@@ -136,11 +139,13 @@ void Pipeline::set_builtin_state() {
       } else if (b.name.find("Material.") != std::string::npos) {
         const float v = ends(".ambient") ? 0.2f : ends(".diffuse") ? 0.8f : 0.0f;
         if (b.type == GL_FLOAT_VEC4) {
-          for (int k = 0; k < 3; ++k) put(k, v);
+          for (int k = 0; k < 3; ++k)
+            put(k, v);
           put(3, 1.0f);
         }
       } else if (b.name == "gl_LightModel.ambient") {
-        for (int k = 0; k < 3; ++k) put(k, 0.2f);
+        for (int k = 0; k < 3; ++k)
+          put(k, 0.2f);
         put(3, 1.0f);
       }
     }
@@ -214,7 +219,9 @@ uint64_t Pipeline::run_fragments(int quads, const std::vector<std::vector<float>
   return kill;
 }
 
-void Pipeline::clear(const Vec4& c) { std::fill(fb.begin(), fb.end(), c); }
+void Pipeline::clear(const Vec4& c) {
+  std::fill(fb.begin(), fb.end(), c);
+}
 
 Vec4 Pipeline::pixel(int x, int y) const {
   if (x < 0 || y < 0 || x >= width || y >= height) return {0, 0, 0, 0};
@@ -250,7 +257,8 @@ void Pipeline::draw_rect(float x, float y, float w, float h) {
       out[v][kOutPosition * 4 + 1] = py;
       out[v][kOutPosition * 4 + 3] = 1.0f;
       for (int c = 0; c < 4; ++c) {
-        out[v][static_cast<size_t>(kOutFrontColor * 4 + c)] = in[v][static_cast<size_t>(kInColor * 4 + c)];
+        out[v][static_cast<size_t>(kOutFrontColor * 4 + c)] =
+            in[v][static_cast<size_t>(kInColor * 4 + c)];
         for (int t = 0; t < kMaxTextureCoords; ++t)
           out[v][static_cast<size_t>((kOutTexCoord0 + t) * 4 + c)] =
               in[v][static_cast<size_t>((kInMultiTexCoord0 + t) * 4 + c)];
@@ -305,7 +313,8 @@ void Pipeline::draw_triangle(const std::vector<float>* vin[3]) {
   // Where each fragment input comes from among the vertex outputs.
   std::vector<int> from(kNumFragmentInputs * 4, -1);
   for (int c = 0; c < 4; ++c) {
-    from[static_cast<size_t>(kFragColor * 4 + c)] = (front ? kOutFrontColor : kOutBackColor) * 4 + c;
+    from[static_cast<size_t>(kFragColor * 4 + c)] =
+        (front ? kOutFrontColor : kOutBackColor) * 4 + c;
     from[static_cast<size_t>(kFragSecondaryColor * 4 + c)] =
         (front ? kOutFrontSecondaryColor : kOutBackSecondaryColor) * 4 + c;
     for (int t = 0; t < kMaxTextureCoords; ++t)
@@ -316,7 +325,8 @@ void Pipeline::draw_triangle(const std::vector<float>* vin[3]) {
   from[kFragFogFragCoord * 4] = kOutFogFragCoord * 4;
   if (!program.vertex()) {
     // Fixed-function colours come unlit from the vertex.
-    for (int c = 0; c < 4; ++c) from[static_cast<size_t>(kFragColor * 4 + c)] = kOutFrontColor * 4 + c;
+    for (int c = 0; c < 4; ++c)
+      from[static_cast<size_t>(kFragColor * 4 + c)] = kOutFrontColor * 4 + c;
   }
   std::vector<std::array<int, 2>> quads;
   for (int qy = y0; qy <= y1; qy += 2)

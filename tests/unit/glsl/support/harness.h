@@ -21,7 +21,7 @@ std::unique_ptr<glsl::Program> build(const std::string& vs, const std::string& f
                                      const glsl::Limits& limits = {});
 
 class Pipeline {
- public:
+public:
   explicit Pipeline(const glsl::Program& p, int width = 250, int height = 250);
 
   // glUniform by name ("v", "arr[2]", "s.m"): floats for float types; ints, bools and
@@ -53,7 +53,7 @@ class Pipeline {
   // Vertex attributes other than the position for draw_rect (conventional and generic).
   std::vector<float> attrib_defaults;
 
- private:
+private:
   void draw_triangle(const std::vector<float>* v[3]);
   std::vector<char> scratch_;
 };

@@ -19,7 +19,9 @@ const char* level_name(SimdLevel l) {
   return l == SimdLevel::Avx512 ? "avx512" : l == SimdLevel::Avx2 ? "avx2" : "baseline";
 }
 
-uint32_t bits(float f) { return std::bit_cast<uint32_t>(f); }
+uint32_t bits(float f) {
+  return std::bit_cast<uint32_t>(f);
+}
 
 LaneShader::LaneShader(const std::string& source, const glsl::Limits& limits) {
   program = build("", source, &log, limits);
@@ -46,7 +48,8 @@ std::vector<Vec4> LaneShader::run(const std::vector<std::array<Vec4, 4>>& in, ui
   std::vector<Vec4> r(static_cast<size_t>(lanes));
   for (int l = 0; l < lanes; ++l)
     for (int c = 0; c < 4; ++c)
-      r[static_cast<size_t>(l)][static_cast<size_t>(c)] = out[static_cast<size_t>(l)][static_cast<size_t>(c)];
+      r[static_cast<size_t>(l)][static_cast<size_t>(c)] =
+          out[static_cast<size_t>(l)][static_cast<size_t>(c)];
   return r;
 }
 

@@ -20,7 +20,7 @@ const char* level_name(SimdLevel l);
 // A fragment shader whose inputs are the varyings v0..v3 (vec4) and whose result is
 // gl_FragColor (unclamped), run over 64 lanes.
 class LaneShader {
- public:
+public:
   // `source` is a whole fragment shader; it may declare v0..v3 as varying vec4.
   explicit LaneShader(const std::string& source, const glsl::Limits& limits = {});
   bool ok() const { return program != nullptr; }

@@ -51,8 +51,12 @@ double ms_since(std::chrono::steady_clock::time_point t0) {
   return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
 }
 
-CaseResult skip(const std::string& why) { return {Outcome::Skip, why, 0}; }
-CaseResult fail(const std::string& why) { return {Outcome::Fail, why, 0}; }
+CaseResult skip(const std::string& why) {
+  return {Outcome::Skip, why, 0};
+}
+CaseResult fail(const std::string& why) {
+  return {Outcome::Fail, why, 0};
+}
 
 // ---- glslparsertest ----
 
@@ -64,7 +68,8 @@ CaseResult run_parse(const std::string& path) {
   std::istringstream lines(src.substr(b, e - b));
   for (std::string line; std::getline(lines, line);) {
     line = trim(line);
-    while (!line.empty() && (line[0] == '*' || line[0] == '/')) line = trim(line.substr(1));
+    while (!line.empty() && (line[0] == '*' || line[0] == '/'))
+      line = trim(line.substr(1));
     const size_t colon = line.find(':');
     if (colon != std::string::npos) cfg[trim(line.substr(0, colon))] = trim(line.substr(colon + 1));
   }
@@ -151,10 +156,12 @@ std::string parse_shader_test(const std::string& src, ShaderTest& t) {
         // Limits beyond Pineda's (glsl.h Limits) skip the test.
         const glsl::Limits lim;
         const int want = std::atoi(w[2].c_str());
-        const int have = w[0] == "GL_MAX_FRAGMENT_UNIFORM_COMPONENTS" ? lim.max_fragment_uniform_components
-                         : w[0] == "GL_MAX_VERTEX_UNIFORM_COMPONENTS" ? lim.max_vertex_uniform_components
-                         : w[0] == "GL_MAX_VARYING_FLOATS" || w[0] == "GL_MAX_VARYING_COMPONENTS" ? lim.max_varying_floats
-                         : 1 << 30;
+        const int have =
+            w[0] == "GL_MAX_FRAGMENT_UNIFORM_COMPONENTS" ? lim.max_fragment_uniform_components
+            : w[0] == "GL_MAX_VERTEX_UNIFORM_COMPONENTS" ? lim.max_vertex_uniform_components
+            : w[0] == "GL_MAX_VARYING_FLOATS" || w[0] == "GL_MAX_VARYING_COMPONENTS"
+                ? lim.max_varying_floats
+                : 1 << 30;
         if (want > have) return w[0] + " " + w[2];
         continue;
       } else if (w[0] == "rlimit") {
@@ -177,7 +184,9 @@ std::string parse_shader_test(const std::string& src, ShaderTest& t) {
   return "";
 }
 
-bool near(float a, double b) { return std::fabs(static_cast<double>(a) - b) <= 0.01 + 1.0 / 255; }
+bool near(float a, double b) {
+  return std::fabs(static_cast<double>(a) - b) <= 0.01 + 1.0 / 255;
+}
 
 CaseResult run_shader_test(const std::string& path) {
   ShaderTest t;
@@ -205,7 +214,8 @@ CaseResult run_shader_test(const std::string& path) {
   }
   const double elapsed = ms_since(t0);
   if (expect_link_error) {
-    CaseResult r{ok ? Outcome::Fail : Outcome::Pass, ok ? "linked, expected a link error" : "", elapsed};
+    CaseResult r{ok ? Outcome::Fail : Outcome::Pass, ok ? "linked, expected a link error" : "",
+                 elapsed};
     return r;
   }
   if (!ok) return fail("did not link: " + log);
@@ -232,9 +242,10 @@ CaseResult run_shader_test(const std::string& path) {
     if (w.empty()) continue;
     cmd_is_rgb = std::find(w.begin(), w.end(), "rgb") != w.end();
     // Numbers; "0x..." is a float's bit pattern for float uniforms (as piglit's parser).
-    const bool float_type = w.size() > 1 && (w[1].find("vec") != std::string::npos || w[1] == "float" ||
-                                             w[1].rfind("mat", 0) == 0) &&
-                            w[1][0] != 'i' && w[1][0] != 'b';
+    const bool float_type =
+        w.size() > 1 &&
+        (w[1].find("vec") != std::string::npos || w[1] == "float" || w[1].rfind("mat", 0) == 0) &&
+        w[1][0] != 'i' && w[1][0] != 'b';
     const auto nums = [&](size_t from) {
       std::vector<double> v;
       for (size_t i = from; i < w.size(); ++i) {
@@ -289,17 +300,20 @@ CaseResult run_shader_test(const std::string& path) {
       const auto v = nums(3);
       // piglit: the fraction of the window, the last pixel for 1.0.
       err = probe(std::min(static_cast<int>(v[0] * t.width), t.width - 1),
-                  std::min(static_cast<int>(v[1] * t.height), t.height - 1), {v.begin() + 2, v.end()});
+                  std::min(static_cast<int>(v[1] * t.height), t.height - 1),
+                  {v.begin() + 2, v.end()});
     } else if (w[0] == "texture" && w.size() >= 5 && w[1] == "rgbw") {
       const int unit = std::atoi(w[2].c_str()), tw = std::atoi(w[3].c_str()),
                 th = std::atoi(w[4].c_str());
       if (unit < 0 || unit > 31 || tw <= 0 || th <= 0 || tw > 4096 || th > 4096) return skip(cmd);
-      if (static_cast<int>(pipe.sampler.units.size()) <= unit) pipe.sampler.units.resize(static_cast<size_t>(unit) + 1);
+      if (static_cast<int>(pipe.sampler.units.size()) <= unit)
+        pipe.sampler.units.resize(static_cast<size_t>(unit) + 1);
       // piglit_rgbw_image: red, green (bottom row), blue, white (top row).
       pipe.sampler.units[static_cast<size_t>(unit)] = TestTexture::make(
           shader::TexTarget::Tex2D, tw, th, 1, [&](int, int x, int y, int) -> std::array<float, 4> {
             const bool right = x >= tw / 2, top = y >= th / 2;
-            if (!top) return right ? std::array<float, 4>{0, 1, 0, 1} : std::array<float, 4>{1, 0, 0, 1};
+            if (!top)
+              return right ? std::array<float, 4>{0, 1, 0, 1} : std::array<float, 4>{1, 0, 0, 1};
             return right ? std::array<float, 4>{1, 1, 1, 1} : std::array<float, 4>{0, 0, 1, 1};
           });
       pipe.sampler.units[static_cast<size_t>(unit)].repeat = false;

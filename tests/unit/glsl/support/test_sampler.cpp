@@ -55,7 +55,8 @@ float scaled(float s, int n) {
 
 std::array<float, 4> TestSampler::lookup(int unit, float s, float t, float r, float lambda,
                                          bool shadow) const {
-  if (unit < 0 || unit >= static_cast<int>(units.size()) || units[static_cast<size_t>(unit)].levels.empty())
+  if (unit < 0 || unit >= static_cast<int>(units.size()) ||
+      units[static_cast<size_t>(unit)].levels.empty())
     return {0, 0, 0, 1};
   const TestTexture& tex = units[static_cast<size_t>(unit)];
   int face = 0;
@@ -144,7 +145,8 @@ void TestSampler::sample(const shader::TexRequest& req) {
       };
       const float dx0 = d(0, 3, 2, tex->width), dy0 = d(0, 2, 0, tex->width);
       const float dx1 = d(1, 3, 2, tex->height), dy1 = d(1, 2, 0, tex->height);
-      const float rho = std::max(std::sqrt(dx0 * dx0 + dx1 * dx1), std::sqrt(dy0 * dy0 + dy1 * dy1));
+      const float rho =
+          std::max(std::sqrt(dx0 * dx0 + dx1 * dx1), std::sqrt(dy0 * dy0 + dy1 * dy1));
       lambda = rho > 0 ? std::log2(rho) : -100.0f;
       if (req.lod == shader::LodMode::Bias && req.lod_or_bias) lambda += req.lod_or_bias[l];
     }

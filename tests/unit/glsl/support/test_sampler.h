@@ -21,8 +21,7 @@ struct TestTexture {
   std::vector<std::array<std::vector<std::array<float, 4>>, 6>> levels;
 
   // A texture of one level (six faces for cubes) filled by fn(face, x, y, z).
-  template <class Fn>
-  static TestTexture make(shader::TexTarget t, int w, int h, int d, Fn&& fn) {
+  template <class Fn> static TestTexture make(shader::TexTarget t, int w, int h, int d, Fn&& fn) {
     TestTexture tex;
     tex.target = t;
     tex.width = w, tex.height = h, tex.depth = d;
@@ -40,7 +39,7 @@ struct TestTexture {
 };
 
 class TestSampler : public shader::TextureSampler {
- public:
+public:
   std::vector<TestTexture> units; // by texture unit
   int calls = 0;
 

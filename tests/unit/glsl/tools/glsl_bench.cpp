@@ -17,30 +17,28 @@ using namespace pineda;
 
 namespace {
 
-const char* kAlu =
-    "varying vec4 v0, v1;\n"
-    "uniform vec4 u0, u1, u2;\n"
-    "void main() {\n"
-    "  vec4 a = v0, b = v1;\n"
-    "  for (int i = 0; i < 5; i++) {\n"
-    "    a = a * u0 + b;\n"
-    "    b = max(b * u1, a - u2);\n"
-    "    a = clamp(a, -10.0, 10.0);\n"
-    "  }\n"
-    "  gl_FragColor = a + b;\n"
-    "}\n";
+const char* kAlu = "varying vec4 v0, v1;\n"
+                   "uniform vec4 u0, u1, u2;\n"
+                   "void main() {\n"
+                   "  vec4 a = v0, b = v1;\n"
+                   "  for (int i = 0; i < 5; i++) {\n"
+                   "    a = a * u0 + b;\n"
+                   "    b = max(b * u1, a - u2);\n"
+                   "    a = clamp(a, -10.0, 10.0);\n"
+                   "  }\n"
+                   "  gl_FragColor = a + b;\n"
+                   "}\n";
 
-const char* kLighting =
-    "varying vec3 n, l, e;\n"
-    "uniform vec4 diffuse, specular, ambient;\n"
-    "uniform float shininess;\n"
-    "void main() {\n"
-    "  vec3 N = normalize(n), L = normalize(l), E = normalize(e);\n"
-    "  vec3 H = normalize(L + E);\n"
-    "  float d = max(dot(N, L), 0.0);\n"
-    "  float s = pow(max(dot(N, H), 0.0), shininess);\n"
-    "  gl_FragColor = ambient + diffuse * d + specular * s;\n"
-    "}\n";
+const char* kLighting = "varying vec3 n, l, e;\n"
+                        "uniform vec4 diffuse, specular, ambient;\n"
+                        "uniform float shininess;\n"
+                        "void main() {\n"
+                        "  vec3 N = normalize(n), L = normalize(l), E = normalize(e);\n"
+                        "  vec3 H = normalize(L + E);\n"
+                        "  float d = max(dot(N, L), 0.0);\n"
+                        "  float s = pow(max(dot(N, H), 0.0), shininess);\n"
+                        "  gl_FragColor = ambient + diffuse * d + specular * s;\n"
+                        "}\n";
 
 struct Result {
   double ns_per_pixel;
@@ -69,7 +67,8 @@ Result run(const char* src, int quads, SimdLevel level, double seconds) {
   for (int c : exe.inputs_read()) {
     in[static_cast<size_t>(c)].resize(64);
     for (int l = 0; l < 64; ++l)
-      in[static_cast<size_t>(c)][static_cast<size_t>(l)] = 0.1f * static_cast<float>(l % 7) - 0.2f * static_cast<float>(c % 3);
+      in[static_cast<size_t>(c)][static_cast<size_t>(l)] =
+          0.1f * static_cast<float>(l % 7) - 0.2f * static_cast<float>(c % 3);
     ip[static_cast<size_t>(c)] = in[static_cast<size_t>(c)].data();
   }
   std::vector<std::vector<float>> out(shader::kNumFragmentOutputs * 4, std::vector<float>(64));
@@ -112,11 +111,14 @@ Result run(const char* src, int quads, SimdLevel level, double seconds) {
 int main(int argc, char** argv) {
   double seconds = 1.0;
   for (int i = 1; i < argc; ++i)
-    if (!std::strcmp(argv[i], "--seconds") && i + 1 < argc) seconds = std::atof(argv[++i]);
-    else if (!std::strcmp(argv[i], "--blocks") && i + 1 < argc) g_fixed_blocks = std::atol(argv[++i]);
+    if (!std::strcmp(argv[i], "--seconds") && i + 1 < argc)
+      seconds = std::atof(argv[++i]);
+    else if (!std::strcmp(argv[i], "--blocks") && i + 1 < argc)
+      g_fixed_blocks = std::atol(argv[++i]);
   const SimdLevel levels[] = {SimdLevel::Baseline, SimdLevel::Avx2, SimdLevel::Avx512};
   const char* names[] = {"baseline (SSE2, 4 lanes)", "AVX2 (8 lanes)", "AVX-512 (16 lanes)"};
-  for (const auto& [name, src] : {std::pair{"ALU kernel", kAlu}, std::pair{"lighting kernel", kLighting}}) {
+  for (const auto& [name, src] :
+       {std::pair{"ALU kernel", kAlu}, std::pair{"lighting kernel", kLighting}}) {
     for (int quads : {16, 4}) {
       for (int l = 0; l < 3; ++l) {
         if (static_cast<int>(levels[l]) > static_cast<int>(simd_level_supported())) continue;

@@ -16,9 +16,12 @@ int main(int argc, char** argv) {
   std::string dir = PINEDA_PIGLIT_DIR, filter;
   bool quiet = false;
   for (int i = 1; i < argc; ++i) {
-    if (!std::strcmp(argv[i], "--piglit") && i + 1 < argc) dir = argv[++i];
-    else if (!std::strcmp(argv[i], "--filter") && i + 1 < argc) filter = argv[++i];
-    else if (!std::strcmp(argv[i], "--quiet")) quiet = true;
+    if (!std::strcmp(argv[i], "--piglit") && i + 1 < argc)
+      dir = argv[++i];
+    else if (!std::strcmp(argv[i], "--filter") && i + 1 < argc)
+      filter = argv[++i];
+    else if (!std::strcmp(argv[i], "--quiet"))
+      quiet = true;
   }
   const auto files = corpus_files(dir);
   if (files.empty()) {
@@ -35,9 +38,10 @@ int main(int argc, char** argv) {
   for (const std::string& f : files) {
     if (!filter.empty() && f.find(filter) == std::string::npos) continue;
     const CaseResult r = run_case(f);
-    const std::string kind = f.ends_with(".shader_test")
-                                 ? (f.find("/execution/") != std::string::npos ? "execution" : "link")
-                                 : "parse";
+    const std::string kind =
+        f.ends_with(".shader_test")
+            ? (f.find("/execution/") != std::string::npos ? "execution" : "link")
+            : "parse";
     Count& c = by_kind[kind];
     if (r.outcome == Outcome::Pass) ++c.pass;
     if (r.outcome == Outcome::Fail) {
@@ -66,7 +70,8 @@ int main(int argc, char** argv) {
               100.0 * pass / std::max(1, pass + fail));
   if (!times.empty()) {
     std::sort(times.begin(), times.end());
-    std::printf("compile+link per program: median %.2f ms, 90th percentile %.2f ms, max %.1f ms (%zu programs)\n",
+    std::printf("compile+link per program: median %.2f ms, 90th percentile %.2f ms, max %.1f ms "
+                "(%zu programs)\n",
                 times[times.size() / 2], times[times.size() * 9 / 10], times.back(), times.size());
   }
   std::sort(slowest.rbegin(), slowest.rend());
