@@ -31,37 +31,64 @@ template <int W> inline const typename Vec<W>::F* vsrc(const Frame& f, uint32_t 
 
 // NV: the vectors per register when fixed at compile time (whole 64-lane blocks, the loop
 // unrolled), 0 when read from the frame (partial blocks and batches).
+// The long polynomial operations: unrolling them would only grow the code.
+constexpr bool heavy(LaneOp op) {
+  switch (op) {
+  case LaneOp::FExp2:
+  case LaneOp::FLog2:
+  case LaneOp::FExp:
+  case LaneOp::FLog:
+  case LaneOp::FSin:
+  case LaneOp::FCos:
+  case LaneOp::FTan:
+  case LaneOp::FAsin:
+  case LaneOp::FAcos:
+  case LaneOp::FAtan:
+  case LaneOp::FPow:
+  case LaneOp::FAtan2:
+  case LaneOp::IDiv:
+    return true;
+  default:
+    return false;
+  }
+}
+
+template <int W, LaneOp op, int K, class F, class D>
+[[gnu::always_inline]] inline void lane_loop(F* __restrict d, const F* a, const F* b, const F* c,
+                                             int nv) {
+  constexpr int n = lane_op_arity(op);
+  if constexpr (n == 1 && (K & 1)) {
+    const F r = PINEDA_SIMD_NS::apply_lane_op<op, F, D>(a[0], a[0], a[0]);
+    for (int i = 0; i < nv; ++i)
+      d[i] = r;
+  } else {
+    const F as = a[0], bs = b[0], cs = c[0];
+    const auto one = [&](int i) {
+      return PINEDA_SIMD_NS::apply_lane_op<op, F, D>((K & 1) ? as : a[i],
+                                                     n >= 2 ? ((K & 2) ? bs : b[i]) : F{},
+                                                     n >= 3 ? ((K & 4) ? cs : c[i]) : F{});
+    };
+    if constexpr (heavy(op)) {
+      for (int i = 0; i < nv; ++i)
+        d[i] = one(i);
+    } else {
+#pragma GCC unroll 16
+      for (int i = 0; i < nv; ++i)
+        d[i] = one(i);
+    }
+  }
+}
+
+// NV: the vectors per register when fixed at compile time (whole 64-lane blocks, the loop
+// unrolled), 0 when read from the frame (partial blocks and batches).
 template <int W, LaneOp op, int K, int NV> const Instr* k_lane(const Instr* ip, Frame& f) {
   using F = typename Vec<W>::F;
   using D = typename Vec<W>::D;
-  constexpr int n = lane_op_arity(op);
   F* __restrict d = vreg<W>(f, ip->d);
   const F* a = vsrc<W>(f, ip->a, K & 1);
   const F* b = vsrc<W>(f, ip->b, (K & 2) != 0);
   const F* c = vsrc<W>(f, ip->c, (K & 4) != 0);
-  const int nv = NV ? NV : f.nvec;
-  if constexpr (n == 1) {
-    if constexpr (K & 1) {
-      const F r = PINEDA_SIMD_NS::apply_lane_op<op, F, D>(a[0], a[0], a[0]);
-      for (int i = 0; i < nv; ++i)
-        d[i] = r;
-    } else {
-#pragma GCC unroll 16
-      for (int i = 0; i < nv; ++i)
-        d[i] = PINEDA_SIMD_NS::apply_lane_op<op, F, D>(a[i], a[i], a[i]);
-    }
-  } else if constexpr (n == 2) {
-    const F as = a[0], bs = b[0];
-#pragma GCC unroll 16
-    for (int i = 0; i < nv; ++i)
-      d[i] = PINEDA_SIMD_NS::apply_lane_op<op, F, D>((K & 1) ? as : a[i], (K & 2) ? bs : b[i], F{});
-  } else {
-    const F as = a[0], bs = b[0], cs = c[0];
-#pragma GCC unroll 16
-    for (int i = 0; i < nv; ++i)
-      d[i] = PINEDA_SIMD_NS::apply_lane_op<op, F, D>((K & 1) ? as : a[i], (K & 2) ? bs : b[i],
-                                                     (K & 4) ? cs : c[i]);
-  }
+  lane_loop<W, op, K, F, D>(d, a, b, c, NV ? NV : f.nvec);
   PINEDA_NEXT(ip + 1);
 }
 
