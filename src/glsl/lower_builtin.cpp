@@ -311,7 +311,12 @@ Comps Lowerer::builtin(TOperator o, const std::vector<TIntermTyped*>& args, cons
   }
   default:
     fail("unsupported built-in function (operator " + std::to_string(static_cast<int>(o)) + ")");
-    return a.empty() ? Comps{} : a[0];
+    std::vector<Type> ts;
+    flat_types(result_t, ts);
+    Comps z;
+    for (Type t : ts)
+      z.push_back(t == kSamplerType ? kNoValue : f.constant(t, 0));
+    return z;
   }
 }
 

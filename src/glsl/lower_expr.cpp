@@ -402,6 +402,15 @@ Comps Lowerer::componentwise(Op o, Type t, const Comps& a, const Comps& b) {
 
 Comps Lowerer::expr(TIntermTyped* n) {
   if (!n) return {};
+  // The lowering recurses with the expression's depth: a deeper one (a sum of thousands of
+  // terms) is refused before it exhausts the stack.
+  struct Depth {
+    int& d;
+    explicit Depth(int& x) : d(++x) {}
+    ~Depth() { --d; }
+  } depth_guard(expr_depth);
+  if (expr_depth > kMaxExprDepth)
+    fail("an expression is nested more than " + std::to_string(kMaxExprDepth) + " deep");
   if (++lowered_nodes > kMaxLoweredNodes)
     fail("the program is too large once its functions are inlined");
   if (!result.error.empty()) {
@@ -442,7 +451,7 @@ Comps Lowerer::expr(TIntermTyped* n) {
     return out;
   }
   fail("unsupported expression");
-  return {};
+  return expr(n); // the error path: zeros of n's type
 }
 
 Comps Lowerer::binary(TIntermBinary* b) {

@@ -149,6 +149,8 @@ public:
   // fails to link instead of taking the process's memory and time.
   static constexpr long kMaxLoweredNodes = 400000;
   long lowered_nodes = 0;
+  static constexpr int kMaxExprDepth = 2000;
+  int expr_depth = 0;
   std::vector<std::string> call_stack;
   long unroll_budget = 20000;
 

@@ -90,6 +90,23 @@ TEST(GlslErrors, LinkErrors) {
   EXPECT_FALSE(p->info_log().empty());
 }
 
+// Expressions glslang parses but that are too deep to lower recursively fail the link instead
+// of exhausting the stack; a long but reasonable one links.
+TEST(GlslErrors, DeepExpressions) {
+  std::string sum = "x";
+  for (int i = 0; i < 20000; ++i)
+    sum += "+x";
+  auto f = fs("void main() { float x = 1.0; gl_FragColor = vec4(" + sum + "); }\n");
+  ASSERT_TRUE(f->compiled()) << f->info_log();
+  auto p = glsl::Program::link({f}, {});
+  EXPECT_FALSE(p->linked());
+  EXPECT_NE(p->info_log().find("nested"), std::string::npos) << p->info_log();
+  sum = "x";
+  for (int i = 0; i < 1000; ++i)
+    sum += "+x";
+  EXPECT_TRUE(glsl::Program::link({fs("void main() { float x = 1.0; gl_FragColor = vec4(" + sum + "); }\n")}, {})->linked());
+}
+
 TEST(GlslErrors, NoShadersIsFixedFunction) {
   auto p = glsl::Program::link({}, {});
   EXPECT_TRUE(p->linked());
