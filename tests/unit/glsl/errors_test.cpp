@@ -93,18 +93,19 @@ TEST(GlslErrors, LinkErrors) {
 // Expressions glslang parses but that are too deep to lower recursively fail the link instead
 // of exhausting the stack; a long but reasonable one links.
 TEST(GlslErrors, DeepExpressions) {
-  std::string sum = "x";
-  for (int i = 0; i < 20000; ++i)
-    sum += "+x";
-  auto f = fs("void main() { float x = 1.0; gl_FragColor = vec4(" + sum + "); }\n");
+  const auto shader = [](int terms) {
+    std::string s = "void main() { float x = 1.0; gl_FragColor = vec4(x";
+    for (int i = 0; i < terms; ++i)
+      s += "+x";
+    s += "); }\n";
+    return s;
+  };
+  auto f = fs(shader(20000));
   ASSERT_TRUE(f->compiled()) << f->info_log();
   auto p = glsl::Program::link({f}, {});
   EXPECT_FALSE(p->linked());
   EXPECT_NE(p->info_log().find("nested"), std::string::npos) << p->info_log();
-  sum = "x";
-  for (int i = 0; i < 1000; ++i)
-    sum += "+x";
-  EXPECT_TRUE(glsl::Program::link({fs("void main() { float x = 1.0; gl_FragColor = vec4(" + sum + "); }\n")}, {})->linked());
+  EXPECT_TRUE(glsl::Program::link({fs(shader(1000))}, {})->linked());
 }
 
 TEST(GlslErrors, NoShadersIsFixedFunction) {
