@@ -9,7 +9,6 @@
 #include <cmath>
 #include <cstdio>
 #include <cstring>
-#include <regex>
 #include <sstream>
 
 #include "glsl/lower.h"
@@ -80,6 +79,33 @@ std::string float_literal(float v) {
   std::string s = buf;
   if (s.find_first_of(".e") == std::string::npos) s += ".0";
   return s;
+}
+
+// "const TYPE NAME = EXPR;" on one line: the part up to and with "=" (`head`), TYPE and EXPR.
+bool const_decl(const std::string& line, std::string& head, std::string& type, std::string& expr) {
+  size_t i = line.find_first_not_of(" \t");
+  if (i == std::string::npos || line.compare(i, 5, "const") != 0) return false;
+  i += 5;
+  const auto word = [&](std::string& out) {
+    const size_t b = line.find_first_not_of(" \t", i);
+    if (b == std::string::npos || b == i || !ident_start(line[b])) return false;
+    size_t e = b;
+    while (e < line.size() && ident_char(line[e]))
+      ++e;
+    out = line.substr(b, e - b);
+    i = e;
+    return true;
+  };
+  std::string name;
+  if (!word(type) || !word(name)) return false;
+  const size_t eq = line.find_first_not_of(" \t", i);
+  if (eq == std::string::npos || line[eq] != '=') return false;
+  const size_t semi = line.find_last_of(';');
+  if (semi == std::string::npos || semi < eq || line.find_first_not_of(" \t\r", semi + 1) != std::string::npos)
+    return false;
+  head = line.substr(0, eq + 1) + " ";
+  expr = line.substr(eq + 1, semi - eq - 1);
+  return true;
 }
 
 } // namespace
@@ -189,15 +215,12 @@ bool fold_unfolded_constants(std::vector<std::string>& sources, const std::strin
   }
   if (spots.empty()) return false;
   bool changed = false;
-  static const std::regex decl(R"(^(\s*const\s+(\w+)\s+\w+\s*=\s*)(.*);\s*$)");
   // The constants declared before `begin`, which the expressions may use.
   const auto prelude_before = [&](const std::string& src, size_t begin) {
-    std::string prelude;
+    std::string prelude, h, t, e;
     std::istringstream before(src.substr(0, begin));
-    for (std::string line; std::getline(before, line);) {
-      std::smatch pm;
-      if (std::regex_match(line, pm, decl)) prelude += line + "\n";
-    }
+    for (std::string line; std::getline(before, line);)
+      if (const_decl(line, h, t, e)) prelude += line + "\n";
     return prelude;
   };
   std::string prelude;
@@ -268,11 +291,10 @@ bool fold_unfolded_constants(std::vector<std::string>& sources, const std::strin
     size_t end = src.find('\n', begin);
     if (end == std::string::npos) end = src.size();
     const std::string text = src.substr(begin, end - begin);
-    std::smatch m;
-    if (!std::regex_match(text, m, decl)) continue;
-    std::string lit;
-    if (!evaluate_constant(m[2].str(), m[3].str(), version, lit, prelude)) continue;
-    src.replace(begin, end - begin, m[1].str() + lit + ";");
+    std::string head, type, expr, lit;
+    if (!const_decl(text, head, type, expr)) continue;
+    if (!evaluate_constant(type, expr, version, lit, prelude)) continue;
+    src.replace(begin, end - begin, head + lit + ";");
     changed = true;
   }
   return changed;
