@@ -45,6 +45,21 @@ bool contains_kill(TIntermNode* n) {
   return found;
 }
 
+// The tree's depth, without recursion (the tree may be deeper than the stack allows).
+int tree_depth(TIntermNode* root) {
+  std::vector<std::pair<TIntermNode*, int>> stack{{root, 1}};
+  int deepest = 0;
+  while (!stack.empty()) {
+    auto [n, d] = stack.back();
+    stack.pop_back();
+    deepest = std::max(deepest, d);
+    children(n, [&](TIntermNode* c) {
+      if (c) stack.emplace_back(c, d + 1);
+    });
+  }
+  return deepest;
+}
+
 // AST nodes, with the bodies of nested loops counted as if unrolled 64 times: the size an
 // unrolled loop may grow to.
 long node_count(TIntermNode* n) {
@@ -715,6 +730,12 @@ bool Lowerer::run() {
   }
   if (!main_fn) {
     fail("no main()");
+    return false;
+  }
+  // Every walk of the tree below recurses: a tree deeper than this (a sum of thousands of
+  // terms) is refused first.
+  if (tree_depth(root) > kMaxExprDepth) {
+    fail("an expression is nested more than " + std::to_string(kMaxExprDepth) + " deep");
     return false;
   }
   has_kill = contains_kill(root);
