@@ -3,6 +3,7 @@
 
 #include <glslang/MachineIndependent/localintermediate.h>
 
+#include <cctype>
 #include <map>
 
 namespace pineda::glsl {
@@ -66,16 +67,84 @@ std::string where(const TSourceLoc& loc) {
   return std::to_string(loc.string) + ":" + std::to_string(loc.line);
 }
 
+std::string version_error(int string, int line, const std::string& version) {
+  return "ERROR: " + std::to_string(string) + ":" + std::to_string(line) +
+         ": '#version' : version " + version +
+         " is not supported (OpenGL 2.1: GLSL 1.10 and 1.20)\n";
+}
+
 } // namespace
+
+bool check_version_directive(const std::vector<std::string>& sources, std::string& errors) {
+  // The strings read as one text (a comment may span two), with the position of each
+  // character as glslang reports it: string index and line within the string.
+  size_t si = 0, i = 0;
+  int line = 1;
+  const auto at_end = [&] {
+    while (si < sources.size() && i >= sources[si].size())
+      ++si, i = 0, line = 1;
+    return si >= sources.size();
+  };
+  const auto peek = [&](size_t ahead = 0) -> char {
+    size_t s = si, k = i + ahead;
+    while (s < sources.size() && k >= sources[s].size())
+      k -= sources[s].size(), ++s;
+    return s < sources.size() ? sources[s][k] : '\0';
+  };
+  const auto advance = [&] {
+    if (sources[si][i] == '\n') ++line;
+    ++i;
+  };
+  // Whitespace and comments; `newlines` false stops at the end of the line (a directive's
+  // tokens are on one line).
+  const auto skip = [&](bool newlines) {
+    while (!at_end()) {
+      const char c = peek();
+      if (c == ' ' || c == '\t' || c == '\r' || c == '\v' || c == '\f' || (newlines && c == '\n')) {
+        advance();
+      } else if (c == '/' && peek(1) == '*') {
+        advance(), advance();
+        while (!at_end() && !(peek() == '*' && peek(1) == '/'))
+          advance();
+        if (!at_end()) advance(), advance();
+      } else if (c == '/' && peek(1) == '/' && newlines) {
+        while (!at_end() && peek() != '\n')
+          advance();
+      } else {
+        return;
+      }
+    }
+  };
+  const auto word = [&] {
+    std::string w;
+    while (!at_end() && (std::isalnum(static_cast<unsigned char>(peek())) || peek() == '_'))
+      w += peek(), advance();
+    return w;
+  };
+  skip(true);
+  if (at_end() || peek() != '#') return true; // no directive: GLSL 1.10
+  const int string = static_cast<int>(si), at = line;
+  advance();
+  skip(false);
+  if (word() != "version") return true;
+  skip(false);
+  const std::string number = word();
+  if (number.empty() || number.find_first_not_of("0123456789") != std::string::npos)
+    return true; // malformed: glslang says why
+  skip(false);
+  const std::string profile = word();
+  if ((number == "110" || number == "120") && profile != "es") return true;
+  errors += version_error(string, at, profile.empty() ? number : number + " " + profile);
+  return false;
+}
 
 void check_compiled(const TIntermediate& ast, ShaderStage stage, const Limits& limits,
                     std::string& errors) {
   // OpenGL 2.1 has GLSL 1.10 and 1.20 (GL 2.1 §2.15); glslang knows every later version.
   const int v = ast.getVersion();
   if ((v != 110 && v != 120) || ast.getProfile() == EEsProfile) {
-    errors += "ERROR: 0:1: '#version' : version " + std::to_string(v) +
-              (ast.getProfile() == EEsProfile ? " es" : "") +
-              " is not supported (OpenGL 2.1: GLSL 1.10 and 1.20)\n";
+    errors +=
+        version_error(0, 1, std::to_string(v) + (ast.getProfile() == EEsProfile ? " es" : ""));
     return;
   }
   TIntermNode* root = ast.getTreeRoot();

@@ -13,6 +13,12 @@ class TIntermediate;
 
 namespace pineda::glsl {
 
+// Before glslang sees the source: a #version directive other than 110 and 120 (the first token
+// of the concatenated strings, GLSL 1.10 §3.3) appends its error and returns false. glslang
+// would otherwise build its built-in symbol tables for that version first (tens of MB and up
+// to a quarter of a second, for a shader Pineda refuses anyway).
+bool check_version_directive(const std::vector<std::string>& sources, std::string& errors);
+
 // After a successful parse of one shader: appends "ERROR: ..." lines to `errors`.
 void check_compiled(const glslang::TIntermediate& ast, ShaderStage stage, const Limits& limits,
                     std::string& errors);

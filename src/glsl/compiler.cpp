@@ -271,6 +271,7 @@ std::shared_ptr<Shader> Shader::compile(ShaderStage stage, const std::vector<std
   impl.resources = resources_for(limits);
   for (const std::string& src : strings)
     impl.sources.push_back(rename_foreign_macros(splice_lines(src)));
+  if (!check_version_directive(impl.sources, s->log_)) return s;
   ensure_glslang();
   std::lock_guard<std::mutex> lock(glslang_mutex());
   std::string log;

@@ -101,7 +101,8 @@ bool const_decl(const std::string& line, std::string& head, std::string& type, s
   const size_t eq = line.find_first_not_of(" \t", i);
   if (eq == std::string::npos || line[eq] != '=') return false;
   const size_t semi = line.find_last_of(';');
-  if (semi == std::string::npos || semi < eq || line.find_first_not_of(" \t\r", semi + 1) != std::string::npos)
+  if (semi == std::string::npos || semi < eq ||
+      line.find_first_not_of(" \t\r", semi + 1) != std::string::npos)
     return false;
   head = line.substr(0, eq + 1) + " ";
   expr = line.substr(eq + 1, semi - eq - 1);

@@ -35,29 +35,36 @@ enum class Type : uint8_t { Float, Int, Bool };
 
 // The operations. "f" operands are floats, "i" ints, "b" bools (lane masks); the arithmetic and
 // comparison ops take float or int operands (both the same type), as the operands' type says.
-#define PINEDA_IR_OPS(X)                                                                           \
-  /* leaves: no block */                                                                           \
-  X(Const)   /* imm[0]: the 32-bit pattern */                                                      \
-  X(Uniform) /* imm[0]: word offset in the uniform buffer (bool: word != 0) */                     \
-  X(Input)   /* imm[0]: input component (slot * 4 + component) */                                  \
-  X(Phi)     /* defined by a Region out, a Loop phi or a Loop exit */                              \
-  /* arithmetic: float or int */                                                                   \
-  X(Add)                                                                                           \
-  X(Sub) X(Mul) X(Div) X(Neg) X(Min) X(Max) X(Abs) X(Sign) /* float only */                        \
-      X(Floor) X(Ceil) X(Fract) X(Sqrt) X(Rsq) X(Exp2) X(Log2) X(Exp) X(Log) X(Sin) X(Cos) X(Tan)  \
-          X(Asin) X(Acos) X(Atan) X(Pow)                                                           \
-              X(Atan2) /* comparisons: float or int operands (Eq and Ne also bool), bool result */ \
-      X(Lt) X(Le) X(Gt) X(Ge) X(Eq) X(Ne) /* bool */                                               \
-      X(And) X(Or) X(Xor) X(Not)                                                                   \
-          X(Select) /* arg0 ? arg1 : arg2, lane by lane */ /* conversions */                       \
-      X(I2F) X(F2I) X(B2F) X(B2I) X(F2B) X(I2B) /* fragment derivatives over 2x2 quads */          \
-      X(Ddx) X(Ddy) /* uniform array element: imm[0] base word, imm[1] stride, imm[2] count; arg0  \
-                       index */                                                                    \
-      X(UniformIndexed) /* texture lookup: args s, t, r, lod-or-bias; imm[0] sampler word, imm[1]  \
-                           TexKind bits */                                                         \
-      X(Tex) X(TexComp) /* component imm[0] of the Tex arg0 */ /* side effects and control */      \
-      X(StoreOutput) /* imm[0]: output component; arg0 value */                                    \
-      X(ExitIfNone)  /* loop exit test, arg0 mask */
+// clang-format off
+#define PINEDA_IR_OPS(X) \
+  /* leaves: no block */ \
+  X(Const)   /* imm[0]: the 32-bit pattern */ \
+  X(Uniform) /* imm[0]: word offset in the uniform buffer (bool: word != 0) */ \
+  X(Input)   /* imm[0]: input component (slot * 4 + component) */ \
+  X(Phi)     /* defined by a Region out, a Loop phi or a Loop exit */ \
+  /* arithmetic: float or int */ \
+  X(Add) X(Sub) X(Mul) X(Div) X(Neg) X(Min) X(Max) X(Abs) X(Sign) \
+  /* float only */ \
+  X(Floor) X(Ceil) X(Fract) X(Sqrt) X(Rsq) X(Exp2) X(Log2) X(Exp) X(Log) \
+  X(Sin) X(Cos) X(Tan) X(Asin) X(Acos) X(Atan) X(Pow) X(Atan2) \
+  /* comparisons: float or int operands (Eq and Ne also bool), bool result */ \
+  X(Lt) X(Le) X(Gt) X(Ge) X(Eq) X(Ne) \
+  /* bool */ \
+  X(And) X(Or) X(Xor) X(Not) \
+  X(Select) /* arg0 ? arg1 : arg2, lane by lane */ \
+  /* conversions */ \
+  X(I2F) X(F2I) X(B2F) X(B2I) X(F2B) X(I2B) \
+  /* fragment derivatives over 2x2 quads */ \
+  X(Ddx) X(Ddy) \
+  /* uniform array element: imm[0] base word, imm[1] stride, imm[2] count; arg0 index */ \
+  X(UniformIndexed) \
+  /* texture lookup: args s, t, r, lod-or-bias; imm[0] sampler word, imm[1] TexKind bits */ \
+  X(Tex) \
+  X(TexComp) /* component imm[0] of the Tex arg0 */ \
+  /* side effects and control */ \
+  X(StoreOutput) /* imm[0]: output component; arg0 value */ \
+  X(ExitIfNone)  /* loop exit test, arg0 mask */
+// clang-format on
 
 enum class Op : uint8_t {
 #define PINEDA_X(name) name,

@@ -54,6 +54,30 @@ TEST(GlslErrors, OnlyGlsl110And120) {
   }
 }
 
+// The directive is found as glslang would: after comments, across strings, with the string
+// and line it is on in the log; malformed directives are left to glslang.
+TEST(GlslErrors, VersionDirectiveCheckedFirst) {
+  const char* body = "void main() { gl_FragColor = vec4(1.0); }\n";
+  const auto log_of = [](std::vector<std::string> strings) {
+    auto f = glsl::Shader::compile(glsl::ShaderStage::Fragment, strings);
+    EXPECT_FALSE(f->compiled()) << strings[0];
+    return f->info_log();
+  };
+  EXPECT_NE(log_of({"#version 130\n", body}).find("ERROR: 0:1: '#version' : version 130"),
+            std::string::npos);
+  EXPECT_NE(log_of({"// a comment\n/* two\nlines */  # version 330 core\n", body})
+                .find("ERROR: 0:3: '#version' : version 330 core"),
+            std::string::npos);
+  EXPECT_NE(log_of({"/* spans ", "strings */\n\n#version 999\n", body})
+                .find("ERROR: 1:3: '#version' : version 999"),
+            std::string::npos);
+  EXPECT_NE(log_of({"#version 120 es\n", body}).find("version 120 es"), std::string::npos);
+  EXPECT_FALSE(log_of({"#version\n", body}).empty());
+  EXPECT_FALSE(log_of({"#version 1x0\n", body}).empty());
+  EXPECT_TRUE(fs(std::string("/* c */ // c\n  #  version 120\n") + body)->compiled());
+  EXPECT_TRUE(fs(std::string("#define X 1\n") + body)->compiled());
+}
+
 TEST(GlslErrors, LinkErrors) {
   const auto link = [](std::vector<std::shared_ptr<const glsl::Shader>> s) {
     return glsl::Program::link(s, {});

@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <ostream>
 #include <random>
 
 #include "support/lanes.h"
@@ -69,6 +70,11 @@ struct TexCase {
   bool shadow, proj;
   int lod; // 0 implicit, 1 bias, 2 explicit
 };
+// gtest prints a parameter in the test's listing: the name, not the struct's bytes (which
+// hold addresses, and so made ctest's test names differ from one build to the next).
+void PrintTo(const TexCase& c, std::ostream* os) {
+  *os << c.name;
+}
 
 const TexCase kTexCases[] = {
     {"texture1D", "sampler1D", "texture1D(s, v0.x)", TexTarget::Tex1D, false, false, 0},
