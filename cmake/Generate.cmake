@@ -12,12 +12,7 @@
 
 find_package(Python3 REQUIRED COMPONENTS Interpreter)
 
-# The registry is a Debian package (khronos-api); another copy can be chosen at configure time.
-set(PINEDA_GL_XML "/usr/share/khronos-api/gl.xml" CACHE FILEPATH "Khronos OpenGL registry (gl.xml)")
-if(NOT EXISTS "${PINEDA_GL_XML}")
-  message(FATAL_ERROR "The OpenGL registry ${PINEDA_GL_XML} does not exist: install the "
-    "khronos-api package or set PINEDA_GL_XML to a copy of gl.xml.")
-endif()
+# PINEDA_GL_XML, the registry (khronos-api), is checked by cmake/Dependencies.cmake.
 
 # Paths are taken from this file's location, not CMAKE_SOURCE_DIR, so that the rules also work
 # when Pineda is a subproject of another build.

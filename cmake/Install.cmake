@@ -66,3 +66,18 @@ install(EXPORT PinedaTargets
   NAMESPACE Pineda::
   FILE PinedaTargets.cmake
   DESTINATION ${PINEDA_CMAKE_INSTALL_DIR})
+
+# glvnd vendor libraries (cmake/Glvnd.cmake): libGLX_pineda.so.0 and libEGL_pineda.so.0 in
+# libdir, where glvnd's libGLX and the vendor file's path find them; the EGL vendor file where
+# glvnd's libEGL looks (share/glvnd/egl_vendor.d, under a /usr prefix); pineda-run in bindir.
+if(TARGET pineda_glx_vendor)
+  install(TARGETS pineda_glx_vendor LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR} NAMELINK_SKIP)
+endif()
+if(TARGET pineda_egl_vendor)
+  install(TARGETS pineda_egl_vendor LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR} NAMELINK_SKIP)
+  install(FILES ${CMAKE_BINARY_DIR}/install/50_pineda.json
+    DESTINATION ${CMAKE_INSTALL_DATADIR}/glvnd/egl_vendor.d)
+endif()
+if(EXISTS ${CMAKE_BINARY_DIR}/install/pineda-run OR PINEDA_GLX)
+  install(PROGRAMS ${CMAKE_BINARY_DIR}/install/pineda-run DESTINATION ${CMAKE_INSTALL_BINDIR})
+endif()

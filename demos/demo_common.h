@@ -69,6 +69,7 @@ struct Options {
   int width = 640;
   int height = 480;
   bool verbose = false;
+  bool egl = false; // GLFW's EGL context API instead of GLX
 };
 
 // ---------------------------------------------------------------------------------------------
@@ -182,7 +183,8 @@ inline void usage(FILE* out, const char* name, const std::vector<ExtraOption>& e
                "                      hidden window\n"
                "  --screenshot FILE   headless: write the last frame as a PNG (needs --frames)\n"
                "  --size WxH          framebuffer size (default 640x480)\n"
-               "  --verbose           print GL_RENDERER, GL_VERSION and GL_VENDOR\n",
+               "  --verbose           print GL_RENDERER, GL_VERSION and GL_VENDOR\n"
+               "  --egl               create the context through EGL instead of GLX\n",
                name);
   for (const auto& e : extra) {
     const std::string flag = e.name + (e.arg.empty() ? "" : " " + e.arg);
@@ -243,6 +245,8 @@ inline int parse_args(const char* name, int argc, char** argv, Options& opt,
         return bad(v, "WxH with 1 <= W, H <= 8192");
     } else if (a == "--verbose" || a == "-v") {
       opt.verbose = true;
+    } else if (a == "--egl") {
+      opt.egl = true;
     } else {
       bool found = false;
       for (const auto& e : extra) {
@@ -328,6 +332,8 @@ inline int run(const char* name, int argc, char** argv, App& app,
     return 1;
   }
   glfwWindowHint(GLFW_DEPTH_BITS, 24);
+  // EGL on X11 (EGL_KHR_platform_x11) with a desktop OpenGL context, as GLFW makes it.
+  if (opt.egl) glfwWindowHint(GLFW_CONTEXT_CREATION_API, GLFW_EGL_CONTEXT_API);
   glfwWindowHint(GLFW_RESIZABLE, headless ? GLFW_FALSE : GLFW_TRUE);
   glfwWindowHint(GLFW_VISIBLE, headless ? GLFW_FALSE : GLFW_TRUE);
   GLFWwindow* window = glfwCreateWindow(opt.width, opt.height, name, nullptr, nullptr);

@@ -4,7 +4,7 @@
 set -euo pipefail
 
 PACKAGES=(
-  build-essential cmake ninja-build pkg-config python3
+  build-essential libc6-dev cmake ninja-build pkg-config python3
   khronos-api            # gl.xml / glx.xml: the generator's input
   libglm-dev             # matrix math outside the hot loops
   libgtest-dev libgmock-dev googletest
@@ -16,12 +16,15 @@ PACKAGES=(
   libx11-dev libxext-dev # GLX over Xlib, presenting with MIT-SHM (XShm)
   xvfb mesa-utils        # GLX tests: a private X server; unmodified glxinfo
   libglfw3-dev           # GLX tests: an unmodified GLFW program; the demos (demos/)
+  libgl-dev              # the demos link the system's libGL.so (Pineda replaces it at run time)
   libxrandr-dev          # GLFW/glfw3native.h includes X11/extensions/Xrandr.h (tests/glx)
   glslang-dev glslang-tools # GLSL front end (static libraries) and glslangValidator
   libglvnd-core-dev libegl-dev # glvnd's vendor ABI headers (GLX, EGL); EGL/eglext.h
+  librust-khronos-api-dev # egl.xml, the EGL registry (khronos-api has only gl.xml, glx.xml)
   freeglut3-dev          # tests/programs: a freeglut program on Pineda
   piglit                 # scripts/piglit.sh: the external GL 1.x test list (not in the test run)
   python3-matplotlib     # scripts/sweep.sh, scaling.sh: charts (run with /usr/bin/python3)
+  mmdebstrap             # scripts/fresh_root.sh: the quick start on a fresh Debian 12 root
 )
 
 missing=()

@@ -1,12 +1,18 @@
 #!/usr/bin/env bash
-# Runs piglit's GL 1.x list (gl1x-tests.txt beside this script, from Debian's piglit package)
-# against Pineda's libGL.so.1 and, for reference, against Mesa llvmpipe limited to GL 1.5, under
-# one private Xvfb. Not part of the test run (scripts/test.sh): it takes several minutes.
+# Runs a piglit list (from Debian's piglit package) against Pineda's libGL.so.1 and, for
+# reference, against Mesa llvmpipe limited to the same GL version, under one private Xvfb. Not
+# part of the test run (scripts/test.sh): it takes minutes (the GLSL lists, tens of minutes).
 #
-# Usage: conformance/piglit/run.sh [--build DIR] [--out DIR] [--filter REGEX] [--no-mesa] [--jobs N]
+# Usage: conformance/piglit/run.sh [--list gl1x|glsl-shader|glsl-parser|FILE] [--build DIR]
+#          [--out DIR] [--filter REGEX] [--no-mesa] [--jobs N] [--expect FILE]
+# Lists (beside this script): gl1x-tests.txt (the default; Mesa at GL 1.5 with 2003's
+# extensions, expectations.txt), glsl-shader-tests.txt and glsl-parser-tests.txt (written by
+# make_glsl_lists.py; Mesa at GL 2.1, expectations-glsl.txt). A line is `COMMAND` (the test is
+# named by its first word) or `NAME<TAB>COMMAND`; the command runs in piglit's root with its
+# binary from bin/.
 # Writes <out>/results.tsv (test, pineda result, mesa result, seconds) and <out>/logs/, prints
 # each test and the totals, and exits non-zero when a test that passes on Mesa does not pass on
-# Pineda without being listed in expectations.txt, or when a listed test passes (a stale entry).
+# Pineda without being listed in the expectations, or when a listed test passes (a stale entry).
 set -euo pipefail
 cd "$(dirname "$0")/../.."
 
@@ -15,21 +21,40 @@ OUT=piglit-out
 FILTER=.
 MESA=1
 JOBS=2
+LIST_NAME=gl1x
+EXPECT=""
 while [ $# -gt 0 ]; do
   case "$1" in
+    --list) LIST_NAME=$2; shift 2 ;;
+    --expect) EXPECT=$2; shift 2 ;;
     --build) BUILD=$2; shift 2 ;;
     --out) OUT=$2; shift 2 ;;
     --filter) FILTER=$2; shift 2 ;;
     --no-mesa) MESA=0; shift ;;
     --jobs) JOBS=$2; shift 2 ;;
-    -h|--help) sed -n 2,9p "$0"; exit 0 ;;
+    -h|--help) sed -n 2,16p "$0"; exit 0 ;;
     *) echo "run.sh: unknown argument '$1' (see --help)" >&2; exit 2 ;;
   esac
 done
 
-BIN=/usr/lib/x86_64-linux-gnu/piglit/bin
-LIST=conformance/piglit/gl1x-tests.txt
-EXPECT=conformance/piglit/expectations.txt
+PIGLIT=/usr/lib/x86_64-linux-gnu/piglit
+BIN=$PIGLIT/bin
+case "$LIST_NAME" in
+  gl1x)
+    LIST=conformance/piglit/gl1x-tests.txt
+    # GL 1.5, as the list was chosen for (LIST.md).
+    MESA_ENV="MESA_GL_VERSION_OVERRIDE=1.5 MESA_EXTENSION_MAX_YEAR=2003"
+    EXPECT=${EXPECT:-conformance/piglit/expectations.txt} ;;
+  glsl-shader | glsl-parser)
+    LIST=conformance/piglit/$LIST_NAME-tests.txt
+    # GL 2.1, Pineda's version; Mesa 22.3 crashes when its GLSL version is overridden too.
+    MESA_ENV="MESA_GL_VERSION_OVERRIDE=2.1"
+    EXPECT=${EXPECT:-conformance/piglit/expectations-glsl.txt} ;;
+  *)
+    LIST=$LIST_NAME
+    MESA_ENV=${MESA_ENV:-}
+    EXPECT=${EXPECT:-/dev/null} ;;
+esac
 if [ ! -d "$BIN" ]; then
   echo "run.sh: $BIN is missing; install Debian's piglit package (scripts/deps.sh does)" >&2
   exit 2
@@ -43,10 +68,18 @@ LIB=$(cd "$BUILD/lib" && pwd)
 rm -rf "$OUT"
 mkdir -p "$OUT/logs"
 
+# The test's name and command of a list line (`COMMAND`, or `NAME<TAB>COMMAND`).
+line_name() { if [[ $1 == *$'\t'* ]]; then echo "${1%%$'\t'*}"; else echo "${1%% *}"; fi; }
+line_command() { echo "${1#*$'\t'}"; }
+export -f line_name line_command
+
 # One test, one implementation: prints the piglit result word (pass, fail, skip, warn, crash,
 # timeout).
 run_one() {
-  local impl=$1 line=$2 name=${2%% *} log status result
+  local impl=$1 name log status result
+  name=$(line_name "$2")
+  local line
+  line=$(line_command "$2")
   log="$OUT/logs/$name.$impl.log"
   # GLX for every test: piglit picks waffle's X11/EGL platform for tests that also support GL ES
   # (arb_point_sprite-checkerboard), and the EGL context it makes current is Mesa's, not ours:
@@ -55,13 +88,13 @@ run_one() {
   if [ "$impl" = pineda ]; then
     env_args+=(LD_LIBRARY_PATH="$LIB")
   else
-    # GL 1.5, as the list was chosen for (LIST.md).
-    env_args+=(MESA_GL_VERSION_OVERRIDE=1.5 MESA_EXTENSION_MAX_YEAR=2003 GALLIUM_DRIVER=llvmpipe)
+    # shellcheck disable=SC2206 # MESA_ENV is a list of VAR=VALUE words
+    env_args+=($MESA_ENV GALLIUM_DRIVER=llvmpipe)
   fi
   local start=$SECONDS
   # shellcheck disable=SC2086 # the list line carries the test's own arguments
   set +e
-  env "${env_args[@]}" timeout 120 "$BIN"/$line >"$log" 2>&1
+  (cd "$PIGLIT" && env "${env_args[@]}" timeout 120 "$BIN"/$line) >"$log" 2>&1
   status=$?
   set -e
   result=$(sed -n 's/.*PIGLIT: {"result": "\([a-z]*\)".*/\1/p' "$log" | tail -n1)
@@ -73,10 +106,11 @@ run_one() {
   echo "$result $((SECONDS - start))"
 }
 export -f run_one
-export OUT LIB BIN
+export OUT LIB BIN PIGLIT MESA_ENV
 
 one_line() {
-  local line=$1 name=${1%% *} p m="-"
+  local line=$1 name p m="-"
+  name=$(line_name "$line")
   p=$(run_one pineda "$line")
   if [ "$MESA" = 1 ]; then m=$(run_one mesa "$line" | cut -d' ' -f1); fi
   printf '%s\t%s\t%s\t%s\n' "$name" "${p%% *}" "$m" "${p##* }"
@@ -85,7 +119,8 @@ export -f one_line
 export MESA
 
 tests/glx/run_with_xvfb.sh "$(command -v Xvfb)" bash -c "
-  grep -v '^#' '$LIST' | grep -E -- '$FILTER' | xargs -P '$JOBS' -I{} bash -c 'one_line \"\$@\"' _ {}
+  grep -v '^#' '$LIST' | grep -E -- '$FILTER' | tr '\\n' '\\0' |
+    xargs -0 -P '$JOBS' -I{} bash -c 'one_line \"\$@\"' _ {}
 " | sort >"$OUT/results.tsv"
 
 total=$(wc -l <"$OUT/results.tsv")
@@ -105,7 +140,7 @@ while IFS=$'\t' read -r name p m secs; do
   printf '%-55s %-8s %-8s %s\n' "$name" "$p" "$m" "$note"
 done <"$OUT/results.tsv"
 echo
-echo "piglit GL 1.x list: $total tests (results in $OUT/results.tsv, logs in $OUT/logs)"
+echo "piglit list $LIST: $total tests (results in $OUT/results.tsv, logs in $OUT/logs)"
 for r in pass fail skip warn crash timeout; do
   p=$(awk -F'\t' -v r=$r '$2 == r' "$OUT/results.tsv" | wc -l)
   m=$(awk -F'\t' -v r=$r '$3 == r' "$OUT/results.tsv" | wc -l)

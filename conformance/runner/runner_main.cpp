@@ -14,8 +14,18 @@
 // that pineda_conformance parses. The program is deliberately an ordinary OSMesa client compiled
 // against the system's <GL/osmesa.h>: running it on Pineda proves that an unmodified -lOSMesa
 // program runs there.
+//
+// Built with PINEDA_RUNNER_EGL (pineda_scene_runner_egl), the same scenes render through EGL
+// instead: a pbuffer of the surfaceless platform (EGL_MESA_platform_surfaceless) with the
+// scene's depth and stencil sizes, read back with glReadPixels. The program is then an ordinary
+// glvnd program (libEGL, libOpenGL); which vendor runs it is the environment's choice.
 #include "../common/rgba_image.h"
 #include "scene.h"
+
+#ifdef PINEDA_RUNNER_EGL
+#include <EGL/egl.h>
+#include <EGL/eglext.h>
+#endif
 
 #include <algorithm>
 #include <chrono>
@@ -53,6 +63,7 @@ std::string clean(const char* s) {
   return out;
 }
 
+#ifndef PINEDA_RUNNER_EGL
 int bytes_per_pixel(GLenum format) { return format == OSMESA_RGB ? 3 : 4; }
 
 // Converts the OSMesa colour buffer to bottom-up RGBA8. OSMESA_ARGB and OSMESA_BGRA name the
@@ -79,6 +90,8 @@ conformance::RgbaImage to_rgba(const unsigned char* buffer, const scenes::SceneO
   }
   return image;
 }
+
+#endif
 
 const char* format_name(GLenum format) {
   switch (format) {
@@ -126,6 +139,7 @@ void note_error(Result& r) {
   if (e != GL_NO_ERROR && r.first_error == GL_NO_ERROR) r.first_error = e;
 }
 
+#ifndef PINEDA_RUNNER_EGL
 int run_scene(const scenes::Scene& scene, const std::string& out_path, int reps) {
   const scenes::SceneOptions& o = scene.options;
   Result result;
@@ -209,6 +223,111 @@ int run_scene(const scenes::Scene& scene, const std::string& out_path, int reps)
   return exit_code;
 }
 
+#endif
+
+#ifdef PINEDA_RUNNER_EGL
+// The scene through EGL: a surfaceless display, a pbuffer of the scene's size whose config has
+// exactly the scene's alpha, depth and stencil sizes. Scenes that need an accumulation buffer
+// (EGL configs have none) are reported unsupported.
+int run_scene_egl(const scenes::Scene& scene, const std::string& out_path, int reps) {
+  const scenes::SceneOptions& o = scene.options;
+  Result result;
+  auto fail = [&](const std::string& status, const std::string& detail, int code) {
+    result.status = status;
+    result.detail = detail + " (EGL error " + std::to_string(eglGetError()) + ")";
+    print_result(result);
+    return code;
+  };
+  if (o.accum_bits > 0)
+    return fail("unsupported", "EGL configs have no accumulation buffer", kExitUnsupported);
+  EGLDisplay dpy =
+      eglGetPlatformDisplay(EGL_PLATFORM_SURFACELESS_MESA, EGL_DEFAULT_DISPLAY, nullptr);
+  if (dpy == EGL_NO_DISPLAY || !eglInitialize(dpy, nullptr, nullptr) || !eglBindAPI(EGL_OPENGL_API))
+    return fail("context_failed", "no surfaceless EGL display", kExitContext);
+  const EGLint want[] = {EGL_SURFACE_TYPE, EGL_PBUFFER_BIT, EGL_RENDERABLE_TYPE, EGL_OPENGL_BIT,
+                         EGL_NONE};
+  EGLint n = 0;
+  eglChooseConfig(dpy, want, nullptr, 0, &n);
+  std::vector<EGLConfig> configs(static_cast<std::size_t>(std::max(n, 0)));
+  if (n > 0) eglChooseConfig(dpy, want, configs.data(), n, &n);
+  const int alpha = o.format == OSMESA_RGB ? 0 : 8;
+  EGLConfig config = nullptr;
+  for (EGLConfig c : configs) {
+    EGLint a = 0, d = 0, st = 0;
+    eglGetConfigAttrib(dpy, c, EGL_ALPHA_SIZE, &a);
+    eglGetConfigAttrib(dpy, c, EGL_DEPTH_SIZE, &d);
+    eglGetConfigAttrib(dpy, c, EGL_STENCIL_SIZE, &st);
+    if (a == alpha && d == o.depth_bits && st == o.stencil_bits) {
+      config = c;
+      break;
+    }
+  }
+  if (config == nullptr)
+    return fail("context_failed",
+                "no config with alpha " + std::to_string(alpha) + ", depth " +
+                    std::to_string(o.depth_bits) + ", stencil " + std::to_string(o.stencil_bits),
+                kExitContext);
+  const EGLint size[] = {EGL_WIDTH, o.width, EGL_HEIGHT, o.height, EGL_NONE};
+  EGLSurface surface = eglCreatePbufferSurface(dpy, config, size);
+  EGLContext ctx = eglCreateContext(dpy, config, EGL_NO_CONTEXT, nullptr);
+  if (surface == EGL_NO_SURFACE || ctx == EGL_NO_CONTEXT ||
+      !eglMakeCurrent(dpy, surface, surface, ctx))
+    return fail("context_failed", "pbuffer, context or eglMakeCurrent failed", kExitContext);
+  result.renderer = clean(reinterpret_cast<const char*>(glGetString(GL_RENDERER)));
+  result.version = clean(reinterpret_cast<const char*>(glGetString(GL_VERSION)));
+  const scenes::Frame frame{o.width, o.height};
+  auto read = [&] {
+    conformance::RgbaImage image;
+    image.width = o.width;
+    image.height = o.height;
+    image.pixels.resize(static_cast<std::size_t>(o.width) * o.height * 4);
+    // The scene's own pixel store state must not change the read-back.
+    glPushClientAttrib(GL_CLIENT_PIXEL_STORE_BIT);
+    glPixelStorei(GL_PACK_ALIGNMENT, 1);
+    glPixelStorei(GL_PACK_ROW_LENGTH, 0);
+    glPixelStorei(GL_PACK_SKIP_ROWS, 0);
+    glPixelStorei(GL_PACK_SKIP_PIXELS, 0);
+    glPixelStorei(GL_PACK_SWAP_BYTES, GL_FALSE);
+    glPixelStorei(GL_PACK_LSB_FIRST, GL_FALSE);
+    glReadPixels(0, 0, o.width, o.height, GL_RGBA, GL_UNSIGNED_BYTE, image.pixels.data());
+    glPopClientAttrib();
+    return image;
+  };
+  int exit_code = kExitOk;
+  try {
+    scenes::reset_state(frame);
+    scene.draw(frame);
+    glFinish();
+    note_error(result);
+    // The read itself must not be counted against the scene: the error state is read first.
+    const conformance::RgbaImage first = read();
+    if (std::string err = conformance::write_rgba_file(out_path, first); !err.empty()) {
+      result.status = "output_failed";
+      result.detail = err;
+      exit_code = kExitOutput;
+    }
+    for (int i = 0; i < reps && exit_code == kExitOk; ++i) {
+      scenes::reset_state(frame);
+      scene.draw(frame);
+      glFinish();
+      note_error(result);
+      if (read().pixels != first.pixels) result.frames_identical = false;
+    }
+  } catch (const scenes::Unsupported& missing) {
+    result.status = "unsupported";
+    result.detail = std::string("library lacks ") + missing.what();
+    exit_code = kExitUnsupported;
+  }
+  note_error(result);
+  print_result(result);
+  eglMakeCurrent(dpy, EGL_NO_SURFACE, EGL_NO_SURFACE, EGL_NO_CONTEXT);
+  eglDestroySurface(dpy, surface);
+  eglDestroyContext(dpy, ctx);
+  eglTerminate(dpy);
+  return exit_code;
+}
+#endif
+
 } // namespace
 
 int main(int argc, char** argv) {
@@ -248,7 +367,11 @@ int main(int argc, char** argv) {
     return kExitUsage;
   }
   for (const scenes::Scene& s : scenes::all_scenes())
+#ifdef PINEDA_RUNNER_EGL
+    if (s.name == scene_name) return run_scene_egl(s, out_path, reps);
+#else
     if (s.name == scene_name) return run_scene(s, out_path, reps);
+#endif
   std::fprintf(stderr, "unknown scene '%s' (see --list)\n", scene_name.c_str());
   return kExitUsage;
 }

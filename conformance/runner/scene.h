@@ -15,6 +15,9 @@
 #include <GL/osmesa.h>
 #include <GL/gl.h>
 #include <GL/glext.h>
+#ifdef PINEDA_RUNNER_EGL
+#include <EGL/egl.h>
+#endif
 
 #include <stdexcept>
 #include <string>
@@ -64,10 +67,15 @@ struct Unsupported : std::runtime_error {
   explicit Unsupported(const std::string& function) : std::runtime_error(function) {}
 };
 
-// Functions newer than GL 1.1 are looked up through OSMesaGetProcAddress, never linked directly,
-// so that a library without them reports "unsupported" instead of failing to load.
+// Functions newer than GL 1.1 are looked up through OSMesaGetProcAddress (eglGetProcAddress in
+// the EGL runner), never linked directly, so that a library without them reports "unsupported"
+// instead of failing to load.
 template <typename Fn> Fn proc(const char* name) {
+#ifdef PINEDA_RUNNER_EGL
+  auto p = eglGetProcAddress(name);
+#else
   OSMESAproc p = OSMesaGetProcAddress(name);
+#endif
   if (!p) throw Unsupported(name);
   return reinterpret_cast<Fn>(p);
 }

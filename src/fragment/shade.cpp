@@ -309,8 +309,12 @@ namespace {
       // Scaled derivatives (u, v, w) along x and y (§3.8.8 eq 3.18).
       float dx[3] = {0, 0, 0}, dy[3] = {0, 0, 0};
       if (cube) {
-        // Derivatives of the face coordinates of the quad's upper-left major axis.
-        const float ax = std::fabs(s[ul]), ay = std::fabs(t[ul]), az = std::fabs(r[ul]);
+        // Derivatives of the face coordinates along the major axis of the quad's first
+        // fragment. Not the upper-left lane's: where a small primitive covers part of a quad
+        // (a 3x3 face drawn at an odd position), that lane may be a helper whose extrapolated
+        // direction leaves the face, and another face's axis gives a far too large rho.
+        const int rep = ll + std::countr_zero(qcov[q]);
+        const float ax = std::fabs(s[rep]), ay = std::fabs(t[rep]), az = std::fabs(r[rep]);
         const int major = (ax >= ay && ax >= az) ? 0 : (ay >= az ? 1 : 2);
         const auto face = [&](int p, float& u, float& v) {
           const float d[3] = {s[p], t[p], r[p]};

@@ -6,6 +6,8 @@
 # Usage: compare_demo.sh PROGRAM PNG_COMPARE LIB_DIR OUT_DIR "COMPARE_OPTIONS" [PROGRAM_ARGS...]
 # The program gets PROGRAM_ARGS --verbose --screenshot OUT_DIR/{pineda,mesa}.png.
 # Run under tests/glx/run_with_xvfb.sh (needs DISPLAY).
+# With PINEDA_COMPARE_GLVND=DIR in the environment the Pineda run goes through glvnd's own
+# libraries instead, with the vendor libraries of DIR (libGLX_pineda.so.0, libEGL_pineda.so.0).
 set -u
 program=$1 compare=$2 lib_dir=$3 out_dir=$4 compare_options=$5
 shift 5
@@ -25,12 +27,17 @@ run() { # run NAME ENV... : runs the program with the environment given, output 
 }
 
 args=("$@")
-run pineda LD_LIBRARY_PATH="$lib_dir"
+if [ -n "${PINEDA_COMPARE_GLVND:-}" ]; then
+  run pineda LD_LIBRARY_PATH="$PINEDA_COMPARE_GLVND" __GLX_VENDOR_LIBRARY_NAME=pineda \
+    __EGL_VENDOR_LIBRARY_FILENAMES="$PINEDA_COMPARE_GLVND/50_pineda.json"
+else
+  run pineda LD_LIBRARY_PATH="$lib_dir"
+fi
 if ! grep -q "^GL_RENDERER: Pineda" "$out_dir/pineda.log"; then
   echo "compare_demo: the Pineda run did not render on Pineda (GL_RENDERER above)" >&2
   exit 1
 fi
-run mesa -u LD_LIBRARY_PATH GALLIUM_DRIVER=llvmpipe LIBGL_ALWAYS_SOFTWARE=1
+run mesa -u LD_LIBRARY_PATH -u PINEDA_COMPARE_GLVND GALLIUM_DRIVER=llvmpipe LIBGL_ALWAYS_SOFTWARE=1
 if ! grep -q "^GL_RENDERER: llvmpipe" "$out_dir/mesa.log"; then
   echo "compare_demo: the Mesa run did not render on llvmpipe (GL_RENDERER above)" >&2
   exit 1

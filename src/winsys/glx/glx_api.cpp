@@ -24,8 +24,11 @@ constexpr const char* kExtensions =
     "GLX_EXT_swap_control GLX_EXT_visual_info GLX_MESA_swap_control";
 
 std::unordered_set<GlxContext*>& contexts() {
-  static std::unordered_set<GlxContext*> set;
-  return set;
+  // Never destroyed: a library loaded after the application registered its exit handlers
+  // (glvnd loads vendors on first use) has its destructors run before them, and handlers such
+  // as freeglut's still make GLX calls.
+  static auto* set = new std::unordered_set<GlxContext*>;
+  return *set;
 }
 
 // This thread's GLX binding (GLX 1.4 §3.3.7: a context is current to one thread at a time).
@@ -54,7 +57,7 @@ void flush_front(GlxContext* ctx) {
   if (presents_on_flush(*ctx->draw))
     present(*ctx->draw);
   else if (draws_front(*ctx))
-    present_front(*ctx->draw);
+    x11::present_front(*ctx->draw);
 }
 
 // glFlush / glFinish.
@@ -68,7 +71,7 @@ void present_front_hook(Context* gl) {
 void front_selected_hook(Context* gl) {
   std::lock_guard<std::mutex> lock(registry_mutex());
   auto* ctx = static_cast<GlxContext*>(gl);
-  if (ctx->draw != nullptr && ctx->draw->front_stale) pull_front(*ctx->draw);
+  if (ctx->draw != nullptr && ctx->draw->front_stale) x11::pull_front(*ctx->draw);
 }
 
 // Ends ctx's binding on this thread: pending front-buffer rendering is flushed first
@@ -104,8 +107,8 @@ std::shared_ptr<Surface> resolve(DisplayState* ds, GLXDrawable id, GlxContext* c
   std::shared_ptr<Surface> s = find_surface(ds, id);
   if (s != nullptr && !s->implicit) {
     // Compatible configs (§3.3.7): same screen and the same colour buffer layout.
-    if (s->config->screen != want->screen || s->config->format != want->format ||
-        s->config->visual_depth != want->visual_depth) {
+    if (s->config->screen != want->screen || s->config->x.color != want->x.color ||
+        s->config->x.depth != want->x.depth) {
       report_error(ds, -1, BadMatch, id, req);
       return nullptr;
     }
@@ -120,7 +123,7 @@ std::shared_ptr<Surface> resolve(DisplayState* ds, GLXDrawable id, GlxContext* c
     report_error(ds, GLXBadDrawable, 0, id, req);
     return nullptr;
   }
-  if (XVisualIDFromVisual(wa.visual) != want->visual_id) {
+  if (XVisualIDFromVisual(wa.visual) != want->x.visual_id) {
     report_error(ds, -1, BadMatch, id, req);
     return nullptr;
   }
@@ -138,10 +141,7 @@ std::shared_ptr<Surface> resolve(DisplayState* ds, GLXDrawable id, GlxContext* c
     return s;
   }
   s = std::make_shared<Surface>();
-  s->ds = ds;
-  s->kind = SurfaceKind::Window;
-  s->x_drawable = id;
-  s->config = want;
+  init_surface(*s, ds, SurfaceKind::Window, id, want);
   s->implicit = true;
   s->id = id;
   if (!allocate_buffers(*s, wa.width, wa.height)) {
@@ -156,6 +156,11 @@ Bool make_current(Display* dpy, GLXDrawable draw, GLXDrawable read, GLXContext h
   ApiLock api;
   DisplayState* ds = display_state(dpy);
   GlxContext* ctx = lookup_context(handle);
+  // A context destroyed while current lives on until it is released (§3.3.7), and may be made
+  // current again meanwhile on its thread, as Mesa allows: freeglut's exit handler destroys
+  // the current context and then binds it again to close its window.
+  if (ctx == nullptr && handle != nullptr && reinterpret_cast<GlxContext*>(handle) == t_ctx)
+    ctx = t_ctx;
   if (handle != nullptr && ctx == nullptr) {
     report_error(ds, GLXBadContext, 0, 0, req);
     return False;
@@ -205,23 +210,12 @@ Bool make_current(Display* dpy, GLXDrawable draw, GLXDrawable read, GLXContext h
   ctx->draw_id = draw;
   ctx->read_id = read;
   // GL rendering must see what X drew into a pixmap (§3.3.9 glXWaitX semantics on binding).
-  if (s->kind == SurfaceKind::Pixmap) pull_pixmap(*s);
-  // GL 2.1 §2.11.1: the viewport starts as the whole drawable when first made current.
-  if (!ctx->ever_current) {
-    ctx->ever_current = true;
-    ctx->vp_w = s->width;
-    ctx->vp_h = s->height;
-    mark_dirty(ctx, kDirtyViewport);
-    // GL 2.1 §4.2.1, §4.3.2: BACK when there is a back buffer, FRONT otherwise. Set before
-    // attach, which selects the buffers they name.
-    const GLenum initial = has_back_buffer(*s) ? GL_BACK : GL_FRONT;
-    ctx->draw_buffer = initial;
-    ctx->read_buffer = initial;
-    mark_dirty(ctx, kDirtyFragment);
-  }
+  if (s->kind == SurfaceKind::Pixmap) x11::pull_pixmap(*s);
+  // The viewport, scissor box and draw and read buffers start from the drawable; set before
+  // attach, which selects the buffers they name.
+  winsys::first_make_current(ctx, s->width, s->height, has_back_buffer(*s));
   attach(ctx, *s);
-  ctx->present_front = &present_front_hook;
-  ctx->front_selected = &front_selected_hook;
+  winsys::set_hooks(ctx, &present_front_hook, &front_selected_hook);
   ctx->is_current = true;
   ctx->thread = std::this_thread::get_id();
   t_ctx = ctx;
@@ -601,7 +595,8 @@ GLX_EXPORT void glXWaitX(void) {
   if (c == nullptr || t_dpy == nullptr) return;
   XSync(t_dpy, False);
   // X rendering into a pixmap becomes visible to GL (§3.3.9).
-  if (c->draw != nullptr && c->draw->kind == SurfaceKind::Pixmap) pull_pixmap(*c->draw);
+  if (c->draw != nullptr && c->draw->kind == SurfaceKind::Pixmap)
+    pineda::x11::pull_pixmap(*c->draw);
 }
 
 GLX_EXPORT int glXSwapIntervalMESA(unsigned int interval) {

@@ -19,38 +19,13 @@ namespace pineda::glx {
 namespace {
 
 std::vector<std::unique_ptr<DisplayState>>& displays() {
-  static std::vector<std::unique_ptr<DisplayState>> list;
-  return list;
+  // Never destroyed, like contexts() in glx_api.cpp: exit handlers may still call GLX.
+  static auto* list = new std::vector<std::unique_ptr<DisplayState>>;
+  return *list;
 }
 
 // Largest pbuffer: the largest viewport Pineda accepts.
 constexpr int kMaxPbufferDim = kMaxViewportDim;
-
-// The byte layout of a 32-bit pixel of a visual with 8-bit channels, as Pineda's formats name
-// them. Depends on the server's image byte order, which XPutImage and XShmPutImage keep.
-bool pixel_format(Display* dpy, const XVisualInfo& v, ColorFormat* out) {
-  const bool lsb = ImageByteOrder(dpy) == LSBFirst;
-  if (v.red_mask == 0xff0000 && v.green_mask == 0xff00 && v.blue_mask == 0xff) {
-    *out = lsb ? ColorFormat::BGRA8 : ColorFormat::ARGB8;
-    return true;
-  }
-  if (v.red_mask == 0xff && v.green_mask == 0xff00 && v.blue_mask == 0xff0000 && lsb) {
-    *out = ColorFormat::RGBA8;
-    return true;
-  }
-  return false;
-}
-
-// Whether images of this depth are stored 32 bits per pixel (Pineda writes 4-byte pixels).
-bool depth_is_32bpp(Display* dpy, int depth) {
-  int n = 0;
-  XPixmapFormatValues* formats = XListPixmapFormats(dpy, &n);
-  bool ok = false;
-  for (int i = 0; i < n; ++i)
-    if (formats[i].depth == depth) ok = formats[i].bits_per_pixel == 32;
-  if (formats != nullptr) XFree(formats);
-  return ok;
-}
 
 void build_configs(DisplayState* ds) {
   Display* dpy = ds->dpy;
@@ -62,16 +37,14 @@ void build_configs(DisplayState* ds) {
     int n = 0;
     XVisualInfo* vis = XGetVisualInfo(dpy, VisualScreenMask | VisualClassMask, &tmpl, &n);
     // Depth-24 visuals first so that the first config is an ordinary opaque window's.
-    std::vector<XVisualInfo> usable;
+    std::vector<x11::Format> usable;
     for (int i = 0; i < n; ++i) {
-      ColorFormat f;
-      if ((vis[i].depth == 24 || vis[i].depth == 32) && pixel_format(dpy, vis[i], &f) &&
-          depth_is_32bpp(dpy, vis[i].depth))
-        usable.push_back(vis[i]);
+      x11::Format f;
+      if (x11::usable_visual(dpy, vis[i], &f)) usable.push_back(f);
     }
     std::stable_sort(usable.begin(), usable.end(),
-                     [](const XVisualInfo& a, const XVisualInfo& b) { return a.depth < b.depth; });
-    for (const XVisualInfo& v : usable) {
+                     [](const x11::Format& a, const x11::Format& b) { return a.depth < b.depth; });
+    for (const x11::Format& v : usable) {
       // Native order: the most capable config first (what glXGetFBConfigs lists).
       for (bool db : {true, false})
         for (int alpha : {8, 0})
@@ -84,11 +57,7 @@ void build_configs(DisplayState* ds) {
                 auto c = std::make_unique<Config>();
                 c->id = next_id++;
                 c->screen = screen;
-                c->visual = v.visual;
-                c->visual_id = v.visualid;
-                c->visual_depth = v.depth;
-                pixel_format(dpy, v, &c->format);
-                c->rgb_mask = v.red_mask | v.green_mask | v.blue_mask;
+                c->x = v;
                 c->double_buffer = db;
                 c->alpha_bits = alpha;
                 c->depth_bits = depth;
@@ -141,8 +110,7 @@ DisplayState* display_state(Display* dpy) {
     ds->error_base = 0;
     ds->event_base = 0;
   }
-  const char* no_shm = std::getenv("PINEDA_GLX_NO_SHM");
-  ds->shm = XShmQueryExtension(dpy) && !(no_shm != nullptr && no_shm[0] != '\0' && no_shm[0] != '0');
+  ds->shm = x11::shm_available(dpy);
   build_configs(ds.get());
   if (XExtCodes* codes = XAddExtension(dpy)) XESetCloseDisplay(dpy, codes->extension, on_close_display);
   list.push_back(std::move(ds));
@@ -161,7 +129,7 @@ const Config* config_for_visual(DisplayState* ds, const XVisualInfo* vis) {
   auto it = ds->visual_choice.find(vis->visualid);
   if (it != ds->visual_choice.end() && it->second->screen == vis->screen) return it->second;
   for (const auto& c : ds->configs)
-    if (c->visual_id == vis->visualid && c->screen == vis->screen) return c.get();
+    if (c->x.visual_id == vis->visualid && c->screen == vis->screen) return c.get();
   return nullptr;
 }
 
@@ -199,7 +167,7 @@ bool config_attrib(const Config& c, int attribute, int* value) {
   case GLX_TRANSPARENT_GREEN_VALUE:
   case GLX_TRANSPARENT_BLUE_VALUE:
   case GLX_TRANSPARENT_ALPHA_VALUE: v = 0; break;
-  case GLX_VISUAL_ID: v = static_cast<int>(c.visual_id); break;
+  case GLX_VISUAL_ID: v = static_cast<int>(c.x.visual_id); break;
   case GLX_SCREEN: v = c.screen; break;
   case GLX_MAX_PBUFFER_WIDTH:
   case GLX_MAX_PBUFFER_HEIGHT: v = kMaxPbufferDim; break;
@@ -422,7 +390,7 @@ GLXFBConfig* to_handles(const std::vector<const Config*>& list, int* count) {
 
 XVisualInfo* visual_info(Display* dpy, const Config& c) {
   XVisualInfo tmpl{};
-  tmpl.visualid = c.visual_id;
+  tmpl.visualid = c.x.visual_id;
   tmpl.screen = c.screen;
   int n = 0;
   return XGetVisualInfo(dpy, VisualIDMask | VisualScreenMask, &tmpl, &n);
@@ -476,7 +444,7 @@ GLX_EXPORT XVisualInfo* glXGetVisualFromFBConfig(Display* dpy, GLXFBConfig confi
   const Config* c = find_config(ds, config);
   if (c == nullptr) return nullptr;
   // Later glXGetConfig and glXCreateContext calls on this visual describe this config.
-  ds->visual_choice[c->visual_id] = c;
+  ds->visual_choice[c->x.visual_id] = c;
   return visual_info(dpy, *c);
 }
 
@@ -488,7 +456,7 @@ GLX_EXPORT XVisualInfo* glXChooseVisual(Display* dpy, int screen, int* attribLis
     return nullptr;
   const std::vector<const Config*> list = select(ds, screen, criteria);
   if (list.empty()) return nullptr;
-  ds->visual_choice[list.front()->visual_id] = list.front();
+  ds->visual_choice[list.front()->x.visual_id] = list.front();
   return visual_info(dpy, *list.front());
 }
 

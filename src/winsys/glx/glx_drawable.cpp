@@ -17,44 +17,13 @@ namespace {
 // The largest swap interval glXSwapIntervalEXT keeps (GLX_MAX_SWAP_INTERVAL_EXT).
 constexpr int kMaxSwapInterval = 64;
 
-void release_image(Surface& s) {
-  if (s.image == nullptr) return;
-  if (s.shm) {
-    shm_destroy(s);
-  } else {
-    XDestroyImage(s.image); // frees the calloc'd pixels too
-    s.image = nullptr;
-  }
-}
-
-// Geometry of an X drawable, with errors trapped; false if it is not a drawable.
-bool geometry(Display* dpy, Drawable d, int* w, int* h, int* depth, int* screen_root_ok) {
-  Window root = 0;
-  int x = 0, y = 0;
-  unsigned int uw = 0, uh = 0, border = 0, udepth = 0;
-  Status ok = 0;
-  const int err = trap_reply_errors(
-      [&] { ok = XGetGeometry(dpy, d, &root, &x, &y, &uw, &uh, &border, &udepth); });
-  if (err != 0 || !ok) return false;
-  *w = static_cast<int>(uw);
-  *h = static_cast<int>(uh);
-  if (depth != nullptr) *depth = static_cast<int>(udepth);
-  if (screen_root_ok != nullptr) {
-    *screen_root_ok = -1;
-    for (int i = 0; i < ScreenCount(dpy); ++i)
-      if (RootWindow(dpy, i) == root) *screen_root_ok = i;
-  }
-  return true;
-}
+using x11::geometry;
 
 // A new surface of `kind` for an X drawable (or a pbuffer when `x` is 0) with its buffers.
 std::shared_ptr<Surface> make_surface(DisplayState* ds, SurfaceKind kind, Drawable x,
                                       const Config* c, int w, int h) {
   auto s = std::make_shared<Surface>();
-  s->ds = ds;
-  s->kind = kind;
-  s->x_drawable = x;
-  s->config = c;
+  init_surface(*s, ds, kind, x, c);
   if (!allocate_buffers(*s, w, h)) return nullptr;
   return s;
 }
@@ -66,7 +35,7 @@ GLXPixmap create_pixmap(DisplayState* ds, const Config* c, Pixmap pixmap, int re
     report_error(ds, -1, BadPixmap, pixmap, request);
     return None;
   }
-  if (depth != c->visual_depth || screen != c->screen) {
+  if (depth != c->x.depth || screen != c->screen) {
     report_error(ds, -1, BadMatch, pixmap, request);
     return None;
   }
@@ -100,16 +69,24 @@ Surface::~Surface() {
   orphan_surface(*this);
 }
 
+void init_surface(Surface& s, DisplayState* ds, SurfaceKind kind, Drawable x, const Config* c) {
+  s.ds = ds;
+  s.dpy = ds->dpy;
+  s.kind = kind;
+  s.x_drawable = x;
+  s.config = c;
+  s.format = c->x;
+  s.is_window = kind == SurfaceKind::Window;
+  s.double_buffered = c->double_buffer && kind != SurfaceKind::Pixmap;
+}
+
 void orphan_surface(Surface& s) {
   if (s.ds == nullptr) return;
-  for (GlxContext* ctx : s.bound) {
-    ctx->fb = Framebuffer{};
-    mark_dirty(ctx, kDirtyFramebuffer);
-  }
-  release_image(s);
-  if (s.gc != nullptr) XFreeGC(s.ds->dpy, s.gc);
-  s.gc = nullptr;
+  for (GlxContext* ctx : s.bound)
+    winsys::unbind_buffers(ctx);
+  x11::release_images(s);
   s.ds = nullptr;
+  s.dpy = nullptr;
 }
 
 std::shared_ptr<Surface> find_surface(DisplayState* ds, XID id) {
@@ -122,28 +99,10 @@ bool allocate_buffers(Surface& s, int width, int height) {
   try {
     if (s.kind == SurfaceKind::Pbuffer) {
       s.memory.assign(std::max<size_t>(pixels, 1) * 4, 0);
-    } else {
-      release_image(s);
-      const bool shm = s.kind == SurfaceKind::Window && s.ds->shm && shm_create(s, width, height);
-      if (!shm) {
-        const Config& c = *s.config;
-        XImage* img = XCreateImage(s.ds->dpy, c.visual, static_cast<unsigned>(c.visual_depth),
-                                   ZPixmap, 0, nullptr, static_cast<unsigned>(width),
-                                   static_cast<unsigned>(height), 32, 0);
-        if (img == nullptr) return false;
-        const size_t bytes = static_cast<size_t>(img->bytes_per_line) * static_cast<size_t>(height);
-        img->data = static_cast<char*>(std::calloc(std::max<size_t>(bytes, 1), 1));
-        if (img->bits_per_pixel != 32 || img->data == nullptr) {
-          XDestroyImage(img);
-          return false;
-        }
-        s.image = img;
-      }
-      // A resize leaves the front buffer undefined: it is again what the window shows.
-      if (has_back_buffer(s))
-        s.front.assign(static_cast<size_t>(s.image->bytes_per_line) * static_cast<size_t>(height),
-                       0);
-      s.front_stale = true;
+      s.width = width;
+      s.height = height;
+    } else if (!x11::allocate_images(s, width, height, s.ds->shm)) {
+      return false;
     }
     s.depth.assign(s.config->depth_bits > 0 ? pixels : 0, 0);
     s.stencil.assign(s.config->stencil_bits > 0 ? pixels : 0, 0);
@@ -151,8 +110,6 @@ bool allocate_buffers(Surface& s, int width, int height) {
   } catch (const std::bad_alloc&) {
     return false;
   }
-  s.width = width;
-  s.height = height;
   return true;
 }
 
@@ -160,7 +117,7 @@ bool refresh_size(Surface& s) {
   if (s.kind == SurfaceKind::Pbuffer) return true;
   if (s.ds == nullptr) return false;
   int w = 0, h = 0;
-  if (!geometry(s.ds->dpy, s.x_drawable, &w, &h, nullptr, nullptr)) return false;
+  if (!geometry(s.dpy, s.x_drawable, &w, &h, nullptr, nullptr)) return false;
   if (w == s.width && h == s.height && (s.image != nullptr || w == 0)) return true;
   if (!allocate_buffers(s, w, h)) return false;
   // Every context drawing here sees the new buffers (a resize while another thread renders
@@ -171,85 +128,38 @@ bool refresh_size(Surface& s) {
 }
 
 bool swap_images(Surface& s) {
-  if (s.kind != SurfaceKind::Window || !s.shm || s.spare == nullptr || s.ds == nullptr)
-    return false;
-  Display* dpy = s.ds->dpy;
+  if (s.kind != SurfaceKind::Window || s.ds == nullptr) return false;
   int w = 0, h = 0;
-  // One round trip per swap. Its reply also tells that the server has finished reading the
-  // spare image, sent by the previous swap: requests are processed in order.
-  if (!geometry(dpy, s.x_drawable, &w, &h, nullptr, nullptr)) return false;
-  present_async(s);
-  if (w != s.width || h != s.height) {
-    // The image just sent must outlive the server's read of it.
-    XSync(dpy, False);
-    if (!allocate_buffers(s, w, h)) return true;
-    for (GlxContext* ctx : s.bound)
-      attach(ctx, s);
-    return true;
-  }
-  // GLX 1.4 §3.3.10 leaves the back buffer undefined after a swap; it is kept as it was, as
-  // Mesa does, for programs that redraw only part of each frame. Both copies read the image
-  // the server is reading.
-  const size_t bytes = static_cast<size_t>(s.image->bytes_per_line) * static_cast<size_t>(s.height);
-  std::memcpy(s.spare->data, s.image->data, bytes);
-  std::swap(s.image, s.spare);
+  if (!x11::swap_images(s, &w, &h)) return false;
+  if ((w != s.width || h != s.height) && !allocate_buffers(s, w, h)) return true;
   for (GlxContext* ctx : s.bound)
     attach(ctx, s);
   return true;
 }
 
 void attach(GlxContext* ctx, Surface& s) {
-  Framebuffer& fb = ctx->fb;
-  fb.width = s.width;
-  fb.height = s.height;
-  fb.color_format = s.config->format;
-  fb.alpha_bits = s.config->alpha_bits;
+  winsys::SurfaceBuffers b;
+  b.width = s.width;
+  b.height = s.height;
+  b.format = s.config->x.color;
+  b.alpha_bits = s.config->alpha_bits;
   if (s.kind == SurfaceKind::Pbuffer) {
-    fb.color = s.memory.data();
-    fb.color_stride = static_cast<ptrdiff_t>(s.width) * 4;
+    b.color = s.memory.data();
+    b.stride = static_cast<ptrdiff_t>(s.width) * 4;
   } else {
-    // X images are stored top row first; GL's row 0 is the bottom one.
-    const ptrdiff_t row = s.image->bytes_per_line;
-    fb.color =
-        reinterpret_cast<uint8_t*>(s.image->data) + (s.height > 0 ? (s.height - 1) * row : 0);
-    fb.color_stride = -row;
+    x11::describe_color(s, &b.color, &b.stride, &b.front);
   }
-  fb.depth_bits = s.config->depth_bits;
-  fb.depth = s.depth.empty() ? nullptr : s.depth.data();
-  fb.stencil_bits = s.config->stencil_bits;
-  fb.stencil = s.stencil.empty() ? nullptr : s.stencil.data();
-  fb.accum_bits = s.config->accum_bits;
-  fb.accum = s.accum.empty() ? nullptr : s.accum.data();
-  // GL 2.1 table 4.4: a double-buffered window has a front and a back buffer (`image` is the
-  // back one, presented by swaps); a pbuffer only its back buffer (it is never shown); a
-  // single-buffered window or a pixmap its front buffer (§3.3.5: swaps are ignored).
-  fb.front_color = fb.back_color = fb.color_also = fb.read_color = nullptr;
-  if (s.kind == SurfaceKind::Window && has_back_buffer(s) && !s.front.empty()) {
-    ctx->color_buffers = kColorBufferFrontLeft | kColorBufferBackLeft;
-    fb.back_color = fb.color;
-    fb.front_color = s.front.data() + (fb.color - reinterpret_cast<uint8_t*>(s.image->data));
-    // The registry lock is held here, so the hook (which takes it) is not run; the front
-    // buffer is fetched directly instead.
-    auto* const hook = ctx->front_selected;
-    ctx->front_selected = nullptr;
-    select_color_buffers(ctx);
-    ctx->front_selected = hook;
-    if (s.front_stale && uses_front(*ctx)) pull_front(s);
-  } else {
-    ctx->color_buffers = has_back_buffer(s) ? kColorBufferBackLeft : kColorBufferFrontLeft;
-  }
-  mark_dirty(ctx, kDirtyFramebuffer);
-}
-
-bool draws_front(const GlxContext& ctx) {
-  const Framebuffer& fb = ctx.fb;
-  return fb.front_color != nullptr &&
-         (fb.color == fb.front_color || fb.color_also == fb.front_color);
-}
-
-bool uses_front(const GlxContext& ctx) {
-  const Framebuffer& fb = ctx.fb;
-  return draws_front(ctx) || (fb.front_color != nullptr && fb.read_color == fb.front_color);
+  b.back = has_back_buffer(s);
+  b.depth_bits = s.config->depth_bits;
+  b.depth = s.depth.empty() ? nullptr : s.depth.data();
+  b.stencil_bits = s.config->stencil_bits;
+  b.stencil = s.stencil.empty() ? nullptr : s.stencil.data();
+  b.accum_bits = s.config->accum_bits;
+  b.accum = s.accum.empty() ? nullptr : s.accum.data();
+  winsys::bind_buffers(ctx, b);
+  // The registry lock is held here, so the front_selected hook (which takes it) did not run;
+  // the front buffer is fetched directly instead.
+  if (b.front != nullptr && s.front_stale && uses_front(*ctx)) x11::pull_front(s);
 }
 
 bool has_back_buffer(const Surface& s) {
@@ -281,7 +191,7 @@ GLX_EXPORT GLXWindow glXCreateWindow(Display* dpy, GLXFBConfig config, Window wi
     report_error(ds, -1, BadWindow, win, kReqCreateWindow);
     return None;
   }
-  if (wa.visual == nullptr || XVisualIDFromVisual(wa.visual) != c->visual_id ||
+  if (wa.visual == nullptr || XVisualIDFromVisual(wa.visual) != c->x.visual_id ||
       XScreenNumberOfScreen(wa.screen) != c->screen) {
     report_error(ds, -1, BadMatch, win, kReqCreateWindow);
     return None;

@@ -3,7 +3,7 @@
 // the window's pixel format) and presents it with XShmPutImage or XPutImage.
 //
 // Shared by glx_config.cpp (configs and visuals), glx_drawable.cpp (surfaces and their
-// buffers), glx_present.cpp (moving pixels to and from the X server) and glx_api.cpp (the
+// buffers), glx_errors.cpp (X errors as a server reports them) and glx_api.cpp (the
 // exported entry points, contexts and the current state).
 #pragma once
 
@@ -20,6 +20,8 @@
 #include <vector>
 
 #include "core/context.h"
+#include "winsys/common/surface_binding.h"
+#include "winsys/x11/x11_target.h"
 
 namespace pineda::glx {
 
@@ -28,11 +30,7 @@ namespace pineda::glx {
 struct Config {
   int id = 0; // GLX_FBCONFIG_ID
   int screen = 0;
-  Visual* visual = nullptr;
-  VisualID visual_id = 0;
-  int visual_depth = 0; // 24 or 32
-  ColorFormat format = ColorFormat::BGRA8;
-  unsigned long rgb_mask = 0; // the visual's red|green|blue bits inside a 32-bit pixel
+  x11::Format x; // the visual: Visual, id, depth, Pineda's colour format, colour bits
   bool double_buffer = false;
   int alpha_bits = 0;
   int depth_bits = 0;
@@ -62,39 +60,19 @@ enum class SurfaceKind { Window, Pixmap, Pbuffer };
 
 struct GlxContext;
 
-// A GLX drawable and the buffers Pineda renders into for it.
-struct Surface {
+// A GLX drawable and the buffers Pineda renders into for it. Windows and pixmaps render into
+// the X11 images of x11::Target (shared with EGL); a pbuffer into `memory`.
+struct Surface : x11::Target {
   DisplayState* ds = nullptr;
   SurfaceKind kind = SurfaceKind::Window;
-  XID id = 0;          // the GLXDrawable applications name it by
-  Drawable x_drawable; // the X window or pixmap; 0 for a pbuffer
+  XID id = 0; // the GLXDrawable applications name it by
   const Config* config = nullptr;
   bool implicit = false; // an X window used directly with glXMakeCurrent
-  int width = 0, height = 0;
 
-  // Colour: an XImage in the visual's format (windows and pixmaps) or plain memory (pbuffers).
-  XImage* image = nullptr;
-  XShmSegmentInfo shm_info{};
-  bool shm = false;
-  // A double-buffered window presenting through MIT-SHM has a second image: a swap sends the
-  // back image to the server without waiting and renders on into this one, so the server's
-  // copy overlaps the next frame (swap_images in glx_drawable.cpp). Null without MIT-SHM.
-  // Each image keeps pointing at the segment field it was created with (`shm_info` or
-  // `spare_info`), whichever of `image` and `spare` it is at the moment.
-  XImage* spare = nullptr;
-  XShmSegmentInfo spare_info{};
-  std::vector<uint8_t> memory;
-  // The front colour buffer of a double-buffered window (GLX 1.4 §3.3.10), rows laid out as
-  // in `image`, which is the back buffer. While `front_stale`, the front buffer's contents are
-  // what the window shows (the last swap) and are fetched from it when GL next uses them; a
-  // swap copies the back buffer in only when a context draws into or reads the front, so
-  // back-buffer-only rendering costs no copy.
-  std::vector<uint8_t> front;
-  bool front_stale = true;
+  std::vector<uint8_t> memory; // a pbuffer's colour buffer
   std::vector<uint32_t> depth;
   std::vector<uint8_t> stencil;
   std::vector<int16_t> accum; // RGBA per pixel when the config has an accumulation buffer
-  GC gc = nullptr;
 
   // Pbuffer creation attributes (GLX 1.4 §3.3.5).
   bool preserved = true;
@@ -185,27 +163,15 @@ enum GlxRequest : int {
   kReqCreateContextAttribsARB = 34,
 };
 
-// Run Xlib calls with errors caught instead of reported; returns the X error code (0: none).
-int trap_begin();
-int trap_end(Display* dpy);
-template <typename F> int trap_errors(Display* dpy, F&& body) {
-  trap_begin();
-  body();
-  return trap_end(dpy);
-}
-// The same for a body whose last request waits for its reply: the server has processed every
-// earlier request by then, so their errors have arrived and no XSync round trip is needed.
-int trap_end_replied();
-template <typename F> int trap_reply_errors(F&& body) {
-  trap_begin();
-  body();
-  return trap_end_replied();
-}
+using x11::trap_errors;
+using x11::trap_reply_errors;
 
 // A fresh XID from the client's resource range, for GLX drawables and contexts.
 XID alloc_xid(Display* dpy);
 
 // Surface management (glx_drawable.cpp).
+// Sets up a new surface of `kind` on X drawable `x` (0 for a pbuffer) with config `c`.
+void init_surface(Surface& s, DisplayState* ds, SurfaceKind kind, Drawable x, const Config* c);
 std::shared_ptr<Surface> find_surface(DisplayState* ds, XID id);
 // The display is closing: free the surface's X resources now and detach it from the display
 // (a context may still hold it; its buffers are gone).
@@ -226,17 +192,17 @@ bool has_back_buffer(const Surface& s);
 // GLX_EXT_swap_control's interval of a drawable (glx_drawable.cpp); reports errors.
 void set_swap_interval(DisplayState* ds, GLXDrawable drawable, int interval);
 
-// Presentation (glx_present.cpp).
-void present(Surface& s);       // our colour buffer -> window or pixmap
-void present_async(Surface& s); // the same through MIT-SHM, without waiting for the server
-void pull_pixmap(Surface& s);   // pixmap contents -> our colour buffer (X rendering seen by GL)
-void present_front(Surface& s); // a double-buffered window's front buffer -> window
-void pull_front(Surface& s);    // window contents -> a double-buffered window's front buffer
+// Presentation (x11_target.h) of a surface that is a window or a pixmap.
+inline void present(Surface& s) {
+  if (s.kind != SurfaceKind::Pbuffer) x11::present(s);
+}
 // Whether ctx draws into or reads the front buffer of its double-buffered window.
-bool uses_front(const GlxContext& ctx);
-bool draws_front(const GlxContext& ctx); // draws into it (shown at glFlush)
-bool shm_create(Surface& s, int width, int height);
-void shm_destroy(Surface& s);
+inline bool uses_front(const GlxContext& ctx) {
+  return winsys::uses_front(&ctx);
+}
+inline bool draws_front(const GlxContext& ctx) {
+  return winsys::draws_front(&ctx);
+}
 // When the next swap of `s` may happen (GLX_EXT_swap_control pacing); records it.
 std::chrono::steady_clock::time_point swap_due(Surface& s);
 

@@ -12,6 +12,7 @@
 #include "core/context.h"
 #include "core/version.h"
 #include "dispatch.h"
+#include "winsys/common/surface_binding.h"
 
 #define OSMESA_EXPORT extern "C" __attribute__((visibility("default")))
 
@@ -59,28 +60,28 @@ ColorFormat color_format(GLenum format) {
 
 // Describe the user's buffer to the pipeline (row 0 at the bottom, as GL addresses it).
 void attach_surfaces(OSMesaState* s) {
-  Framebuffer& fb = s->gl.fb;
-  fb.width = s->width;
-  fb.height = s->height;
-  fb.color_format = color_format(s->format);
-  fb.alpha_bits = fb.color_format == ColorFormat::RGB8 ? 0 : 8;
+  winsys::SurfaceBuffers b;
+  b.width = s->width;
+  b.height = s->height;
+  b.format = color_format(s->format);
+  b.alpha_bits = b.format == ColorFormat::RGB8 ? 0 : 8;
   const ptrdiff_t row_pixels = s->row_length > 0 ? s->row_length : s->width;
-  const ptrdiff_t row_bytes = row_pixels * bytes_per_pixel(fb.color_format);
+  const ptrdiff_t row_bytes = row_pixels * bytes_per_pixel(b.format);
   uint8_t* base = static_cast<uint8_t*>(s->buffer);
   if (s->y_up) {
-    fb.color = base;
-    fb.color_stride = row_bytes;
+    b.color = base;
+    b.stride = row_bytes;
   } else {
-    fb.color = base + (s->height - 1) * row_bytes;
-    fb.color_stride = -row_bytes;
+    b.color = base + (s->height - 1) * row_bytes;
+    b.stride = -row_bytes;
   }
-  fb.depth_bits = s->depth_bits;
-  fb.depth = s->depth_bits > 0 ? s->depth.data() : nullptr;
-  fb.stencil_bits = s->stencil_bits;
-  fb.stencil = s->stencil_bits > 0 ? s->stencil.data() : nullptr;
-  fb.accum_bits = s->accum_bits;
-  fb.accum = s->accum_bits > 0 ? s->accum.data() : nullptr;
-  mark_dirty(&s->gl, kDirtyFramebuffer);
+  b.depth_bits = s->depth_bits;
+  b.depth = s->depth_bits > 0 ? s->depth.data() : nullptr;
+  b.stencil_bits = s->stencil_bits;
+  b.stencil = s->stencil_bits > 0 ? s->stencil.data() : nullptr;
+  b.accum_bits = s->accum_bits;
+  b.accum = s->accum_bits > 0 ? s->accum.data() : nullptr;
+  winsys::bind_buffers(&s->gl, b);
 }
 
 OSMesaState* create(GLenum format, GLint depth_bits, GLint stencil_bits, GLint accum_bits,
@@ -193,19 +194,11 @@ OSMESA_EXPORT GLboolean OSMesaMakeCurrent(OSMesaContext ctx, void* buffer, GLenu
   s->width = width;
   s->height = height;
   pineda::attach_surfaces(s);
-  pineda::Context* gl = &s->gl;
-  // GL 2.1 §2.11.1, §4.1.2: the viewport and the scissor box start as the whole window the
-  // first time the context is made current.
-  if (!gl->ever_current) {
-    gl->ever_current = true;
-    gl->vp_w = width;
-    gl->vp_h = height;
-    gl->scissor_box[2] = width;
-    gl->scissor_box[3] = height;
-    pineda::mark_dirty(gl, pineda::kDirtyViewport | pineda::kDirtyFragment);
-  }
+  // GL 2.1 §2.11.1, §4.1.2: the viewport and the scissor box start as the whole buffer the
+  // first time the context is made current; it has a front buffer only.
+  pineda::winsys::first_make_current(&s->gl, width, height, false);
   pineda::t_current_osmesa = s;
-  pineda::set_current_context(gl);
+  pineda::set_current_context(&s->gl);
   return GL_TRUE;
 }
 
