@@ -13,20 +13,23 @@ namespace pineda::shader {
 struct ExecutableImpl {
   Stage stage = Stage::Vertex;
   Code code;
-  // Threaded code per level: [level][instruction]; main_full for whole 64-lane blocks.
-  std::vector<Instr> prologue[3], main[3], main_full[3];
+  // Threaded code per level: [level][instruction]; main_block for whole 64-lane blocks,
+  // main_small for runs of up to 16 lanes (engine_internal.h), and the lanes per vector of
+  // each level's tables.
+  std::vector<Instr> prologue[3], main_small[3], main_block[3];
+  int width[3] = {4, 4, 4};
 };
 
 namespace {
 
-const Kernel* table_for(SimdLevel l, bool full) {
+KernelTable table_for(SimdLevel l, bool block) {
   switch (l) {
   case SimdLevel::Avx512:
-    return kernels_avx512(full);
+    return kernels_avx512(block);
   case SimdLevel::Avx2:
-    return kernels_avx2(full);
+    return kernels_avx2(block);
   default:
-    return kernels_baseline(full);
+    return kernels_baseline(block);
   }
 }
 
@@ -64,6 +67,15 @@ void set_entry(char* regs, int lanes) {
     e[l] = l < lanes ? -1 : 0;
 }
 
+// One run of `lanes` lanes: a small run or a whole block, whichever covers them.
+void run(const ExecutableImpl& e, int level, int lanes, char* regs, const char* splats,
+         RunState& rs) {
+  const bool block = lanes > kSmallRunLanes;
+  const Instr* code = (block ? e.main_block : e.main_small)[level].data();
+  Frame f{regs, splats, code, &rs, (block ? kBlockLanes : kSmallRunLanes) / e.width[level]};
+  execute(code, f);
+}
+
 } // namespace
 
 std::unique_ptr<Executable> Executable::build(const Function& ir, Stage stage, std::string* error) {
@@ -72,10 +84,13 @@ std::unique_ptr<Executable> Executable::build(const Function& ir, Stage stage, s
   if (!generate_code(ir, stage, impl->code, error)) return nullptr;
   const SimdLevel top = simd_level_supported();
   for (int l = 0; l <= level_index(top); ++l) {
-    const Kernel* t = table_for(static_cast<SimdLevel>(l), false);
-    impl->prologue[l] = thread(impl->code.prologue, t);
-    impl->main[l] = thread(impl->code.main, t);
-    impl->main_full[l] = thread(impl->code.main, table_for(static_cast<SimdLevel>(l), true));
+    const KernelTable small = table_for(static_cast<SimdLevel>(l), false);
+    // The prologue runs over the splats: 16 lanes, a small run.
+    static_assert(kSplatBytes / 4 == kSmallRunLanes);
+    impl->prologue[l] = thread(impl->code.prologue, small.k);
+    impl->main_small[l] = thread(impl->code.main, small.k);
+    impl->main_block[l] = thread(impl->code.main, table_for(static_cast<SimdLevel>(l), true).k);
+    impl->width[l] = small.width;
   }
   std::unique_ptr<Executable> e(new Executable());
   e->impl_ = std::move(impl);
@@ -96,20 +111,18 @@ void Executable::prepare(const uint32_t* uniform_words, Prepared& out) const {
   const size_t floats = size_t{impl_->code.splat_count} * (kSplatBytes / 4) + 16;
   out.splats.assign(floats, 0.0f);
   out.uniforms = uniform_words;
-  const SimdLevel level = simd_level();
-  const int w = level_width(level);
+  const int l = level_index(simd_level());
   ShaderFpEnv env;
   RunState rs;
   rs.caller_csr = env.saved();
   rs.uniforms = uniform_words;
   char* base = align64(out.splats.data());
-  Frame f{base, base, impl_->prologue[level_index(level)].data(), &rs, 16 / w};
+  Frame f{base, base, impl_->prologue[l].data(), &rs, kSmallRunLanes / impl_->width[l]};
   execute(f.code, f);
 }
 
 void Executable::run_vertices(const Prepared& p, const VertexBatch& batch, void* scratch) const {
-  const SimdLevel level = simd_level();
-  const int w = level_width(level);
+  const int l = level_index(simd_level());
   char* regs = align64(scratch);
   ShaderFpEnv env;
   RunState rs;
@@ -122,20 +135,16 @@ void Executable::run_vertices(const Prepared& p, const VertexBatch& batch, void*
   rs.tmp = reinterpret_cast<float*>(regs + size_t{impl_->code.reg_count} * kRegBytes);
   for (int base = 0; base < batch.count; base += kBlockLanes) {
     const int lanes = std::min(kBlockLanes, batch.count - base);
-    const Instr* code =
-        (lanes == kBlockLanes ? impl_->main_full : impl_->main)[level_index(level)].data();
     rs.base = base;
     rs.lanes = lanes;
     rs.budget = kRunIterationBudget;
     set_entry(regs, lanes);
-    Frame f{regs, splat_base(p), code, &rs, (lanes + w - 1) / w};
-    execute(code, f);
+    run(*impl_, l, lanes, regs, splat_base(p), rs);
   }
 }
 
 uint64_t Executable::run_fragments(const Prepared& p, const FragmentQuads& q, void* scratch) const {
-  const SimdLevel level = simd_level();
-  const int w = level_width(level);
+  const int l = level_index(simd_level());
   char* regs = align64(scratch);
   ShaderFpEnv env;
   RunState rs;
@@ -151,10 +160,7 @@ uint64_t Executable::run_fragments(const Prepared& p, const FragmentQuads& q, vo
   if (lanes == 0) return 0;
   rs.lanes = lanes;
   set_entry(regs, lanes);
-  const Instr* code =
-      (lanes == kBlockLanes ? impl_->main_full : impl_->main)[level_index(level)].data();
-  Frame f{regs, splat_base(p), code, &rs, (lanes + w - 1) / w};
-  execute(code, f);
+  run(*impl_, l, lanes, regs, splat_base(p), rs);
   return rs.kill;
 }
 

@@ -27,8 +27,8 @@
 
 namespace pineda::shader {
 
-const Kernel* kernels_avx2(bool full) {
-  return full ? make_kernel_table<8, true>() : make_kernel_table<8, false>();
+KernelTable kernels_avx2(bool block) {
+  return block ? make_kernel_table<8, true>() : make_kernel_table<8, false>();
 }
 
 } // namespace pineda::shader
@@ -42,8 +42,8 @@ const Kernel* kernels_avx2(bool full) {
 #else
 
 namespace pineda::shader {
-const Kernel* kernels_avx2(bool full) {
-  return kernels_baseline(full);
+KernelTable kernels_avx2(bool block) {
+  return kernels_baseline(block);
 }
 } // namespace pineda::shader
 

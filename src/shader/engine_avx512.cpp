@@ -29,8 +29,8 @@
 
 namespace pineda::shader {
 
-const Kernel* kernels_avx512(bool full) {
-  return full ? make_kernel_table<16, true>() : make_kernel_table<16, false>();
+KernelTable kernels_avx512(bool block) {
+  return block ? make_kernel_table<16, true>() : make_kernel_table<16, false>();
 }
 
 } // namespace pineda::shader
@@ -44,8 +44,8 @@ const Kernel* kernels_avx512(bool full) {
 #else
 
 namespace pineda::shader {
-const Kernel* kernels_avx512(bool full) {
-  return kernels_avx2(full);
+KernelTable kernels_avx512(bool block) {
+  return kernels_avx2(block);
 }
 } // namespace pineda::shader
 

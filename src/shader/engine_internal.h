@@ -146,16 +146,20 @@ struct Frame {
   int nvec; // vectors per register of this run
 };
 
-// The kernel table of each level, for whole 64-lane blocks (`full`: the lane loops have a fixed
-// trip count and are unrolled) or any lane count. Levels the build does not have return the
-// level below's table.
-const Kernel* kernels_baseline(bool full);
-const Kernel* kernels_avx2(bool full);
-const Kernel* kernels_avx512(bool full);
-// Lanes per vector of each level.
-inline int level_width(SimdLevel l) {
-  return l == SimdLevel::Avx512 ? 16 : l == SimdLevel::Avx2 ? 8 : 4;
-}
+// A run covers either a whole block (64 lanes) or a small run of 16 lanes (up to four quads; the
+// prologue's splats), each with its own kernel table whose lane loops have a fixed trip count
+// and are unrolled: a loop over a run-time count cost about as much as a whole block even for
+// one quad (glsl_bench). Lanes past a run's own are computed on zeros and never stored.
+constexpr int kSmallRunLanes = 16;
+struct KernelTable {
+  const Kernel* k;
+  int width; // lanes per vector: a register is kBlockLanes / width vectors
+};
+// The table of each level for blocks (`block`) or small runs. Levels the build does not have
+// return the level below's table.
+KernelTable kernels_baseline(bool block);
+KernelTable kernels_avx2(bool block);
+KernelTable kernels_avx512(bool block);
 
 // The compiled program, portable across levels.
 struct Code {

@@ -29,8 +29,6 @@ template <int W> inline const typename Vec<W>::F* vsrc(const Frame& f, uint32_t 
 
 // ---- lane-wise operations ----
 
-// NV: the vectors per register when fixed at compile time (whole 64-lane blocks, the loop
-// unrolled), 0 when read from the frame (partial blocks and batches).
 // The long polynomial operations: unrolling them would only grow the code.
 constexpr bool heavy(LaneOp op) {
   switch (op) {
@@ -79,8 +77,7 @@ template <int W, LaneOp op, int K, class F, class D>
   }
 }
 
-// NV: the vectors per register when fixed at compile time (whole 64-lane blocks, the loop
-// unrolled), 0 when read from the frame (partial blocks and batches).
+// NV: the vectors of the run (f.nvec), fixed at compile time so that the loop is unrolled.
 template <int W, LaneOp op, int K, int NV> const Instr* k_lane(const Instr* ip, Frame& f) {
   using F = typename Vec<W>::F;
   using D = typename Vec<W>::D;
@@ -88,7 +85,7 @@ template <int W, LaneOp op, int K, int NV> const Instr* k_lane(const Instr* ip, 
   const F* a = vsrc<W>(f, ip->a, K & 1);
   const F* b = vsrc<W>(f, ip->b, (K & 2) != 0);
   const F* c = vsrc<W>(f, ip->c, (K & 4) != 0);
-  lane_loop<W, op, K, F, D>(d, a, b, c, NV ? NV : f.nvec);
+  lane_loop<W, op, K, F, D>(d, a, b, c, NV);
   PINEDA_NEXT(ip + 1);
 }
 
@@ -288,9 +285,9 @@ void fill_lane(Kernel* t, std::integer_sequence<int, K...>) {
   ((t[static_cast<int>(op) * 8 + K] = &k_lane<W, op, (K & m), NV>), ...);
 }
 
-// Full: the table for whole blocks (every register 64 lanes).
-template <int W, bool Full> const Kernel* make_kernel_table() {
-  constexpr int NV = Full ? kBlockLanes / W : 0;
+// The table for whole blocks (Block) or small runs (engine_internal.h).
+template <int W, bool Block> KernelTable make_kernel_table() {
+  constexpr int NV = (Block ? kBlockLanes : kSmallRunLanes) / W;
   static const auto table = [] {
     struct T {
       Kernel k[kNumKernels];
@@ -320,7 +317,7 @@ template <int W, bool Full> const Kernel* make_kernel_table() {
     set(Special::LoadUniformBool, &k_load_uniform_bool<W>);
     return t;
   }();
-  return table.k;
+  return {table.k, W};
 }
 
 } // namespace

@@ -7,8 +7,8 @@
 
 namespace pineda::shader {
 
-const Kernel* kernels_baseline(bool full) {
-  return full ? make_kernel_table<4, true>() : make_kernel_table<4, false>();
+KernelTable kernels_baseline(bool block) {
+  return block ? make_kernel_table<4, true>() : make_kernel_table<4, false>();
 }
 
 } // namespace pineda::shader

@@ -1,8 +1,9 @@
 // glsl_bench: the shader engine's speed on a ~100-instruction ALU fragment kernel, in ns per
 // pixel at each SIMD level, for blocks of 16 quads (64 pixels) and of 4 quads (16 pixels),
 // and a texture-free lighting-style kernel with transcendentals.
-//   glsl_bench [--seconds S]
+//   glsl_bench [--seconds S] [--quads 16,4,...] [--blocks N]
 // Times are the thread's CPU time (the machine is shared).
+#include <algorithm>
 #include <ctime>
 #include <cstdio>
 #include <cstring>
@@ -46,6 +47,7 @@ struct Result {
 };
 
 long g_fixed_blocks = 0; // --blocks: run exactly this many (for instruction counting)
+std::vector<int> g_quads = {16, 4}; // --quads N,N,...: quads per block
 
 Result run(const char* src, int quads, SimdLevel level, double seconds) {
   auto fs = glsl::Shader::compile(glsl::ShaderStage::Fragment, {src});
@@ -115,11 +117,19 @@ int main(int argc, char** argv) {
       seconds = std::atof(argv[++i]);
     else if (!std::strcmp(argv[i], "--blocks") && i + 1 < argc)
       g_fixed_blocks = std::atol(argv[++i]);
+    else if (!std::strcmp(argv[i], "--quads") && i + 1 < argc) {
+      g_quads.clear();
+      for (const char* q = argv[++i]; *q;) {
+        char* end = nullptr;
+        g_quads.push_back(std::clamp(static_cast<int>(std::strtol(q, &end, 10)), 1, 16));
+        q = *end ? end + 1 : end;
+      }
+    }
   const SimdLevel levels[] = {SimdLevel::Baseline, SimdLevel::Avx2, SimdLevel::Avx512};
   const char* names[] = {"baseline (SSE2, 4 lanes)", "AVX2 (8 lanes)", "AVX-512 (16 lanes)"};
   for (const auto& [name, src] :
        {std::pair{"ALU kernel", kAlu}, std::pair{"lighting kernel", kLighting}}) {
-    for (int quads : {16, 4}) {
+    for (int quads : g_quads) {
       for (int l = 0; l < 3; ++l) {
         if (static_cast<int>(levels[l]) > static_cast<int>(simd_level_supported())) continue;
         const Result r = run(src, quads, levels[l], seconds);
