@@ -72,6 +72,14 @@ set(PINEDA_GL_XML "/usr/share/khronos-api/gl.xml" CACHE FILEPATH "Khronos OpenGL
 pineda_require_file("${PINEDA_GL_XML}" khronos-api "the OpenGL registry (or set PINEDA_GL_XML)")
 pineda_require_header(PINEDA_GLM_INCLUDE glm/mat4x4.hpp libglm-dev)
 pineda_require_header(PINEDA_PTHREAD_INCLUDE pthread.h libc6-dev)
+# glslang parses and links GLSL (src/glsl). Debian's glslang-dev ships static, position
+# independent libraries (linked into libGL with their symbols hidden) and a CMake package, which
+# needs Threads first.
+find_package(Threads)
+find_package(glslang CONFIG QUIET)
+if(NOT TARGET glslang::glslang OR NOT TARGET glslang::glslang-default-resource-limits)
+  pineda_missing("glslang's CMake package and static libraries" glslang-dev)
+endif()
 
 # ---- GLX over Xlib ----
 if(PINEDA_GLX)

@@ -59,7 +59,8 @@ endif()
 
 # pineda_vendor_library(TARGET NAME MAP SOURCES...): the whole of Pineda as lib<NAME>.so.0 in
 # build/glvnd, exporting what MAP lists. -Bsymbolic keeps every reference inside the library
-# bound to its own definitions, whatever the application's libraries export.
+# bound to its own definitions, whatever the application's libraries export; glslang is linked
+# in with none of its symbols exported (--exclude-libs), as in libOSMesa.so.8.
 function(pineda_vendor_library target name map)
   add_library(${target} SHARED $<TARGET_OBJECTS:pineda_backend> $<TARGET_OBJECTS:pineda_frontend>
     ${ARGN})
@@ -68,9 +69,10 @@ function(pineda_vendor_library target name map)
   target_include_directories(${target} PRIVATE ${PINEDA_GLVND_INCLUDE_DIR}
     ${PINEDA_SOURCE_ROOT}/include ${PINEDA_GENERATED_DIR}/include ${PINEDA_GENERATED_DIR}
     ${PINEDA_SOURCE_ROOT}/src)
-  target_link_libraries(${target} PRIVATE Threads::Threads X11::X11 X11::Xext)
+  target_link_libraries(${target} PRIVATE Threads::Threads X11::X11 X11::Xext glslang::glslang
+    glslang::glslang-default-resource-limits)
   target_link_options(${target} PRIVATE "-Wl,--version-script=${map}" "-Wl,--no-undefined"
-    "-Wl,-Bsymbolic")
+    "-Wl,-Bsymbolic" "-Wl,--exclude-libs,ALL")
   add_dependencies(${target} pineda_generate)
   pineda_set_warnings(${target})
 endfunction()

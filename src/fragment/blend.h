@@ -12,15 +12,27 @@
 #include <algorithm>
 #include <cstdint>
 
-#include "raster/raster.h"
+#include "core/raster_state.h"
 
 namespace pineda {
 
 // Blend factors of GL 2.1 table 4.2, in a dense encoding for switch tables.
 enum class BlendFactor : uint8_t {
-  Zero, One, SrcColor, OneMinusSrcColor, DstColor, OneMinusDstColor, SrcAlpha,
-  OneMinusSrcAlpha, DstAlpha, OneMinusDstAlpha, ConstColor, OneMinusConstColor, ConstAlpha,
-  OneMinusConstAlpha, SrcAlphaSaturate,
+  Zero,
+  One,
+  SrcColor,
+  OneMinusSrcColor,
+  DstColor,
+  OneMinusDstColor,
+  SrcAlpha,
+  OneMinusSrcAlpha,
+  DstAlpha,
+  OneMinusDstAlpha,
+  ConstColor,
+  OneMinusConstColor,
+  ConstAlpha,
+  OneMinusConstAlpha,
+  SrcAlphaSaturate,
 };
 
 // Blend equations (GL 2.1 §4.1.8, table 4.1).
@@ -48,22 +60,52 @@ inline void rgb_factor(BlendFactor f, const float s[4], const float d[4], const 
   for (int i = 0; i < 3; ++i) {
     float v = 0.0f;
     switch (f) {
-    case BlendFactor::Zero: v = 0.0f; break;
-    case BlendFactor::One: v = 1.0f; break;
-    case BlendFactor::SrcColor: v = s[i]; break;
-    case BlendFactor::OneMinusSrcColor: v = 1.0f - s[i]; break;
-    case BlendFactor::DstColor: v = d[i]; break;
-    case BlendFactor::OneMinusDstColor: v = 1.0f - d[i]; break;
-    case BlendFactor::SrcAlpha: v = s[3]; break;
-    case BlendFactor::OneMinusSrcAlpha: v = 1.0f - s[3]; break;
-    case BlendFactor::DstAlpha: v = d[3]; break;
-    case BlendFactor::OneMinusDstAlpha: v = 1.0f - d[3]; break;
-    case BlendFactor::ConstColor: v = k[i]; break;
-    case BlendFactor::OneMinusConstColor: v = 1.0f - k[i]; break;
-    case BlendFactor::ConstAlpha: v = k[3]; break;
-    case BlendFactor::OneMinusConstAlpha: v = 1.0f - k[3]; break;
+    case BlendFactor::Zero:
+      v = 0.0f;
+      break;
+    case BlendFactor::One:
+      v = 1.0f;
+      break;
+    case BlendFactor::SrcColor:
+      v = s[i];
+      break;
+    case BlendFactor::OneMinusSrcColor:
+      v = 1.0f - s[i];
+      break;
+    case BlendFactor::DstColor:
+      v = d[i];
+      break;
+    case BlendFactor::OneMinusDstColor:
+      v = 1.0f - d[i];
+      break;
+    case BlendFactor::SrcAlpha:
+      v = s[3];
+      break;
+    case BlendFactor::OneMinusSrcAlpha:
+      v = 1.0f - s[3];
+      break;
+    case BlendFactor::DstAlpha:
+      v = d[3];
+      break;
+    case BlendFactor::OneMinusDstAlpha:
+      v = 1.0f - d[3];
+      break;
+    case BlendFactor::ConstColor:
+      v = k[i];
+      break;
+    case BlendFactor::OneMinusConstColor:
+      v = 1.0f - k[i];
+      break;
+    case BlendFactor::ConstAlpha:
+      v = k[3];
+      break;
+    case BlendFactor::OneMinusConstAlpha:
+      v = 1.0f - k[3];
+      break;
     // GL 2.1 table 4.2: f = min(As, 1 - Ad) for R, G and B.
-    case BlendFactor::SrcAlphaSaturate: v = std::min(s[3], 1.0f - d[3]); break;
+    case BlendFactor::SrcAlphaSaturate:
+      v = std::min(s[3], 1.0f - d[3]);
+      break;
     }
     out[i] = v;
   }
@@ -73,21 +115,30 @@ inline void rgb_factor(BlendFactor f, const float s[4], const float d[4], const 
 // SRC_ALPHA_SATURATE is 1 for alpha (GL 2.1 table 4.2).
 inline float alpha_factor(BlendFactor f, const float s[4], const float d[4], const float k[4]) {
   switch (f) {
-  case BlendFactor::Zero: return 0.0f;
-  case BlendFactor::One: return 1.0f;
+  case BlendFactor::Zero:
+    return 0.0f;
+  case BlendFactor::One:
+    return 1.0f;
   case BlendFactor::SrcColor:
-  case BlendFactor::SrcAlpha: return s[3];
+  case BlendFactor::SrcAlpha:
+    return s[3];
   case BlendFactor::OneMinusSrcColor:
-  case BlendFactor::OneMinusSrcAlpha: return 1.0f - s[3];
+  case BlendFactor::OneMinusSrcAlpha:
+    return 1.0f - s[3];
   case BlendFactor::DstColor:
-  case BlendFactor::DstAlpha: return d[3];
+  case BlendFactor::DstAlpha:
+    return d[3];
   case BlendFactor::OneMinusDstColor:
-  case BlendFactor::OneMinusDstAlpha: return 1.0f - d[3];
+  case BlendFactor::OneMinusDstAlpha:
+    return 1.0f - d[3];
   case BlendFactor::ConstColor:
-  case BlendFactor::ConstAlpha: return k[3];
+  case BlendFactor::ConstAlpha:
+    return k[3];
   case BlendFactor::OneMinusConstColor:
-  case BlendFactor::OneMinusConstAlpha: return 1.0f - k[3];
-  case BlendFactor::SrcAlphaSaturate: return 1.0f;
+  case BlendFactor::OneMinusConstAlpha:
+    return 1.0f - k[3];
+  case BlendFactor::SrcAlphaSaturate:
+    return 1.0f;
   }
   return 0.0f;
 }
@@ -95,11 +146,16 @@ inline float alpha_factor(BlendFactor f, const float s[4], const float d[4], con
 // GL 2.1 table 4.1. MIN and MAX ignore the factors.
 inline float apply_eq(BlendEq eq, float s, float d, float fs, float fd) {
   switch (eq) {
-  case BlendEq::Add: return s * fs + d * fd;
-  case BlendEq::Subtract: return s * fs - d * fd;
-  case BlendEq::ReverseSubtract: return d * fd - s * fs;
-  case BlendEq::Min: return std::min(s, d);
-  case BlendEq::Max: return std::max(s, d);
+  case BlendEq::Add:
+    return s * fs + d * fd;
+  case BlendEq::Subtract:
+    return s * fs - d * fd;
+  case BlendEq::ReverseSubtract:
+    return d * fd - s * fs;
+  case BlendEq::Min:
+    return std::min(s, d);
+  case BlendEq::Max:
+    return std::max(s, d);
   }
   return s;
 }
@@ -122,7 +178,8 @@ inline void blend_pixel(const BlendParams& bp, const uint8_t src[4], const uint8
   float fs[3], fd[3];
   rgb_factor(bp.src_rgb, s, d, bp.constant, fs);
   rgb_factor(bp.dst_rgb, s, d, bp.constant, fd);
-  for (int i = 0; i < 3; ++i) out[i] = to_unorm8(apply_eq(bp.eq_rgb, s[i], d[i], fs[i], fd[i]));
+  for (int i = 0; i < 3; ++i)
+    out[i] = to_unorm8(apply_eq(bp.eq_rgb, s[i], d[i], fs[i], fd[i]));
   const float fsa = alpha_factor(bp.src_a, s, d, bp.constant);
   const float fda = alpha_factor(bp.dst_a, s, d, bp.constant);
   out[3] = to_unorm8(apply_eq(bp.eq_a, s[3], d[3], fsa, fda));

@@ -12,7 +12,7 @@
 #include <cstdint>
 
 #include "fragment/blend.h"
-#include "fragment/simd.h"
+#include "core/simd.h"
 
 namespace pineda {
 

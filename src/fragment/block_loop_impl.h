@@ -39,7 +39,7 @@
 #include "fragment/blend_simd.h"
 #include "fragment/fragment_ops.h"
 #include "fragment/shade.h"
-#include "fragment/simd.h"
+#include "core/simd.h"
 
 #ifndef PINEDA_BLOCK_AVX512
 #define PINEDA_BLOCK_AVX512 0

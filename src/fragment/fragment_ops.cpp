@@ -6,7 +6,7 @@
 
 #include "fragment/blend_simd.h"
 #include "fragment/shade.h"
-#include "fragment/simd.h"
+#include "core/simd.h"
 #include "core/simd_level.h"
 
 #include <algorithm>
@@ -44,14 +44,14 @@ void prepare_ext(const RasterState& rs, const Framebuffer& fb, FragCtx& ctx) {
   }
   if (k.stencil_test) {
     ctx.stencil = fb.stencil;
-    ctx.stencil_func = depth_func_bits(rs.stencil_func);
+    ctx.stencil_func = depth_func_bits(rs.stencil.func);
     // GL 2.1 §4.1.5: the reference is clamped to [0, 2^s - 1]; masks use the low s bits.
-    ctx.stencil_ref = static_cast<uint8_t>(std::clamp(rs.stencil_ref, 0, 255));
-    ctx.stencil_value_mask = static_cast<uint8_t>(rs.stencil_value_mask & 0xffu);
-    ctx.stencil_write_mask = static_cast<uint8_t>(rs.stencil_writemask & 0xffu);
-    ctx.stencil_ops[0] = stencil_op_from_gl(rs.stencil_fail);
-    ctx.stencil_ops[1] = stencil_op_from_gl(rs.stencil_depth_fail);
-    ctx.stencil_ops[2] = stencil_op_from_gl(rs.stencil_depth_pass);
+    ctx.stencil_ref = static_cast<uint8_t>(std::clamp(rs.stencil.ref, 0, 255));
+    ctx.stencil_value_mask = static_cast<uint8_t>(rs.stencil.value_mask & 0xffu);
+    ctx.stencil_write_mask = static_cast<uint8_t>(rs.stencil.writemask & 0xffu);
+    ctx.stencil_ops[0] = stencil_op_from_gl(rs.stencil.fail);
+    ctx.stencil_ops[1] = stencil_op_from_gl(rs.stencil.depth_fail);
+    ctx.stencil_ops[2] = stencil_op_from_gl(rs.stencil.depth_pass);
   }
   if (k.logic_op) ctx.logic = logic_masks(rs.logic_op_mode);
 }

@@ -15,7 +15,7 @@
 #include "fragment/per_fragment.h"
 #include "fragment/state_key.h"
 #include "framebuffer/framebuffer.h"
-#include "raster/raster.h"
+#include "core/raster_state.h"
 
 namespace pineda {
 

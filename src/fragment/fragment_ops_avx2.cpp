@@ -24,7 +24,7 @@
 
 #include "fragment/blend_simd.h"
 #include "fragment/shade.h"
-#include "fragment/simd.h"
+#include "core/simd.h"
 
 #if defined(__clang__)
 #pragma clang attribute push(__attribute__((target("avx2,bmi,bmi2"))), apply_to = function)

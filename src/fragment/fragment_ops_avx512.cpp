@@ -25,7 +25,7 @@
 
 #include "fragment/blend_simd.h"
 #include "fragment/shade.h"
-#include "fragment/simd.h"
+#include "core/simd.h"
 
 #if defined(__clang__)
 #pragma clang attribute push(                                                                      \

@@ -6,7 +6,7 @@
 
 #include <cstdint>
 
-#include "fragment/simd.h"
+#include "core/simd.h"
 
 namespace pineda {
 
@@ -15,14 +15,22 @@ enum class StencilOp : uint8_t { Keep, Zero, Replace, Incr, Decr, Invert, IncrWr
 
 inline StencilOp stencil_op_from_gl(GLenum op) {
   switch (op) {
-  case GL_ZERO: return StencilOp::Zero;
-  case GL_REPLACE: return StencilOp::Replace;
-  case GL_INCR: return StencilOp::Incr;
-  case GL_DECR: return StencilOp::Decr;
-  case GL_INVERT: return StencilOp::Invert;
-  case GL_INCR_WRAP: return StencilOp::IncrWrap;
-  case GL_DECR_WRAP: return StencilOp::DecrWrap;
-  default: return StencilOp::Keep; // the front end accepts only the eight enums
+  case GL_ZERO:
+    return StencilOp::Zero;
+  case GL_REPLACE:
+    return StencilOp::Replace;
+  case GL_INCR:
+    return StencilOp::Incr;
+  case GL_DECR:
+    return StencilOp::Decr;
+  case GL_INVERT:
+    return StencilOp::Invert;
+  case GL_INCR_WRAP:
+    return StencilOp::IncrWrap;
+  case GL_DECR_WRAP:
+    return StencilOp::DecrWrap;
+  default:
+    return StencilOp::Keep; // the front end accepts only the eight enums
   }
 }
 
@@ -33,14 +41,22 @@ inline StencilOp stencil_op_from_gl(GLenum op) {
 inline i32x4 stencil_op_lanes(StencilOp op, i32x4 v, i32x4 ref) {
   const i32x4 zero = {}, top = zero + 0xff;
   switch (op) {
-  case StencilOp::Keep: return v;
-  case StencilOp::Zero: return zero;
-  case StencilOp::Replace: return ref;
-  case StencilOp::Incr: return v - (v < top);
-  case StencilOp::Decr: return v + (v > zero);
-  case StencilOp::Invert: return v ^ top;
-  case StencilOp::IncrWrap: return (v + 1) & top;
-  case StencilOp::DecrWrap: return (v + 0xff) & top;
+  case StencilOp::Keep:
+    return v;
+  case StencilOp::Zero:
+    return zero;
+  case StencilOp::Replace:
+    return ref;
+  case StencilOp::Incr:
+    return v - (v < top);
+  case StencilOp::Decr:
+    return v + (v > zero);
+  case StencilOp::Invert:
+    return v ^ top;
+  case StencilOp::IncrWrap:
+    return (v + 1) & top;
+  case StencilOp::DecrWrap:
+    return (v + 0xff) & top;
   }
   return v;
 }
@@ -51,9 +67,9 @@ inline i32x4 stencil_op_lanes(StencilOp op, i32x4 v, i32x4 ref) {
 // Spreading each bit over a whole word makes the operation four ANDs and three ORs on any
 // packed data, so one code path serves all sixteen operations and every channel at once.
 struct LogicMasks {
-  uint32_t sd = 0;   // s = 1, d = 1
-  uint32_t s_nd = 0; // s = 1, d = 0
-  uint32_t ns_d = 0; // s = 0, d = 1
+  uint32_t sd = 0;    // s = 1, d = 1
+  uint32_t s_nd = 0;  // s = 1, d = 0
+  uint32_t ns_d = 0;  // s = 0, d = 1
   uint32_t ns_nd = 0; // s = 0, d = 0
 };
 

@@ -16,7 +16,7 @@
 #include <cstring>
 
 #include "fragment/fog_equation.h"
-#include "fragment/simd.h"
+#include "core/simd.h"
 #include "texture/cpu_dispatch.h"
 
 namespace pineda {

@@ -25,21 +25,21 @@ StateKey make_state_key(const RasterState& rs, const Framebuffer& fb) {
   k.count_samples = rs.count_samples;
   // GL 2.1 §4.1.5: without a stencil buffer the test always passes and nothing is written.
   // A test that always passes and never writes is the same as no test.
-  const bool stencil_writes =
-      (rs.stencil_writemask & 0xffu) != 0 &&
-      (rs.stencil_fail != GL_KEEP || rs.stencil_depth_fail != GL_KEEP ||
-       rs.stencil_depth_pass != GL_KEEP);
+  const bool stencil_writes = (rs.stencil.writemask & 0xffu) != 0 &&
+                              (rs.stencil.fail != GL_KEEP || rs.stencil.depth_fail != GL_KEEP ||
+                               rs.stencil.depth_pass != GL_KEEP);
   k.stencil_test = rs.stencil_test && fb.stencil != nullptr && fb.stencil_bits > 0 &&
-                   (rs.stencil_func != GL_ALWAYS || stencil_writes);
+                   (rs.stencil.func != GL_ALWAYS || stencil_writes);
   if (rs.logic_op) {
     // GL 2.1 §4.1.10: the logical operation replaces blending; COPY stores the source.
     k.logic_op = k.color_mask != 0 && rs.logic_op_mode != GL_COPY;
   } else if (k.color_mask != 0 && rs.blend && !blend_is_store(rs)) {
     k.blend = true;
-    k.blend_over = rs.blend_src_rgb == GL_SRC_ALPHA &&
-                   rs.blend_dst_rgb == GL_ONE_MINUS_SRC_ALPHA &&
-                   rs.blend_src_a == GL_SRC_ALPHA && rs.blend_dst_a == GL_ONE_MINUS_SRC_ALPHA &&
-                   rs.blend_eq_rgb == GL_FUNC_ADD && rs.blend_eq_a == GL_FUNC_ADD;
+    k.blend_over = rs.blend_state.src_rgb == GL_SRC_ALPHA &&
+                   rs.blend_state.dst_rgb == GL_ONE_MINUS_SRC_ALPHA &&
+                   rs.blend_state.src_a == GL_SRC_ALPHA &&
+                   rs.blend_state.dst_a == GL_ONE_MINUS_SRC_ALPHA &&
+                   rs.blend_state.eq_rgb == GL_FUNC_ADD && rs.blend_state.eq_a == GL_FUNC_ADD;
   }
   return k;
 }

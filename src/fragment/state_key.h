@@ -8,7 +8,7 @@
 #include <cstdint>
 
 #include "framebuffer/framebuffer.h"
-#include "raster/raster.h"
+#include "core/raster_state.h"
 
 namespace pineda {
 
@@ -50,8 +50,8 @@ struct StateKey {
   // Channels written, bit i for R, G, B, A; the alpha bit is dropped for formats without
   // alpha, so "all" means all channels the format stores.
   uint8_t color_mask = 0;
-  bool has_alpha = true; // the format stores alpha; otherwise destination alpha reads as 1
-  bool blend = false;    // blending on and not equivalent to a plain store
+  bool has_alpha = true;   // the format stores alpha; otherwise destination alpha reads as 1
+  bool blend = false;      // blending on and not equivalent to a plain store
   bool blend_over = false; // the blend is SRC_ALPHA, ONE_MINUS_SRC_ALPHA, FUNC_ADD for both
   // The rarer operations each take a per-row branch inside one extra set of instances, so
   // that with all three off the block loops are exactly the ones without them.

@@ -1,8 +1,8 @@
 // glClear (GL 2.1 §4.2.3) on the framebuffer's colour, depth and stencil surfaces.
 //
 // Every clear goes through one rectangle: the whole framebuffer, narrowed by the scissor box
-// when the scissor test is on. Unmasked clears are plain fills: memset when all bytes of the value are equal,
-// wide pattern stores otherwise, and one fill over the whole surface when its rows are
+// when the scissor test is on. Unmasked clears are plain fills: memset when all bytes of the value
+// are equal, wide pattern stores otherwise, and one fill over the whole surface when its rows are
 // contiguous. Masked clears read, merge and write (GL 2.1 §4.2.2: the colour, depth and
 // stencil write masks apply to clears).
 #include <GL/gl.h>
@@ -11,22 +11,11 @@
 #include <cstdint>
 #include <cstring>
 
-#include "raster/raster.h"
+#include "framebuffer/clear.h"
 
 namespace pineda {
 
 namespace {
-
-struct Rect {
-  int x0, y0, x1, y1; // half-open: [x0, x1) x [y0, y1)
-  int w() const { return x1 - x0; }
-  int h() const { return y1 - y0; }
-};
-
-// Clears of at least this many pixels are shared among the worker threads, in runs of at
-// least kShareClearRows rows.
-constexpr int64_t kShareClearArea = 512 * 1024;
-constexpr int kShareClearRows = 16;
 
 uint8_t to_unorm8(float c) {
   c = c > 0.0f ? (c < 1.0f ? c : 1.0f) : 0.0f; // clear colour is clamped (GL 2.1 §4.2.3)
@@ -38,10 +27,21 @@ uint8_t to_unorm8(float c) {
 void color_pixel(const Framebuffer& fb, const ClearState& cs, uint8_t px[4], uint8_t wr[4]) {
   int off[4] = {0, 1, 2, 3};
   switch (fb.color_format) {
-  case ColorFormat::RGBA8: break;
-  case ColorFormat::BGRA8: off[0] = 2; off[2] = 0; break;
-  case ColorFormat::ARGB8: off[0] = 1; off[1] = 2; off[2] = 3; off[3] = 0; break;
-  case ColorFormat::RGB8: off[3] = -1; break;
+  case ColorFormat::RGBA8:
+    break;
+  case ColorFormat::BGRA8:
+    off[0] = 2;
+    off[2] = 0;
+    break;
+  case ColorFormat::ARGB8:
+    off[0] = 1;
+    off[1] = 2;
+    off[2] = 3;
+    off[3] = 0;
+    break;
+  case ColorFormat::RGB8:
+    off[3] = -1;
+    break;
   }
   for (int k = 0; k < 4; ++k) {
     px[k] = 0;
@@ -63,13 +63,15 @@ void color_pixel(const Framebuffer& fb, const ClearState& cs, uint8_t px[4], uin
 void fill_pattern(uint8_t* dst, size_t count, int bpp, const uint8_t px[4]) {
   if (count == 0) return;
   bool uniform = true;
-  for (int k = 1; k < bpp; ++k) uniform = uniform && px[k] == px[0];
+  for (int k = 1; k < bpp; ++k)
+    uniform = uniform && px[k] == px[0];
   if (uniform) {
     std::memset(dst, px[0], count * static_cast<size_t>(bpp));
     return;
   }
   if (bpp == 4) {
-    for (size_t i = 0; i < count; ++i) std::memcpy(dst + 4 * i, px, 4);
+    for (size_t i = 0; i < count; ++i)
+      std::memcpy(dst + 4 * i, px, 4);
     return;
   }
   // 3-byte pixels: lay down a few pixels, then double the filled prefix.
@@ -83,7 +85,7 @@ void fill_pattern(uint8_t* dst, size_t count, int bpp, const uint8_t px[4]) {
   }
 }
 
-void clear_color(Framebuffer& fb, const ClearState& cs, const Rect& r) {
+void clear_color(Framebuffer& fb, const ClearState& cs, const ClearRect& r) {
   if (fb.color == nullptr) return;
   const int bpp = bytes_per_pixel(fb.color_format);
   uint8_t px[4], wr[4];
@@ -110,11 +112,12 @@ void clear_color(Framebuffer& fb, const ClearState& cs, const Rect& r) {
   for (int y = r.y0; y < r.y1; ++y) {
     uint8_t* p = fb.color_row(y) + static_cast<ptrdiff_t>(r.x0) * bpp;
     for (int x = r.x0; x < r.x1; ++x, p += bpp)
-      for (int k = 0; k < bpp; ++k) p[k] = static_cast<uint8_t>((p[k] & ~wr[k]) | (px[k] & wr[k]));
+      for (int k = 0; k < bpp; ++k)
+        p[k] = static_cast<uint8_t>((p[k] & ~wr[k]) | (px[k] & wr[k]));
   }
 }
 
-void clear_depth(Framebuffer& fb, const ClearState& cs, const Rect& r) {
+void clear_depth(Framebuffer& fb, const ClearState& cs, const ClearRect& r) {
   if (fb.depth == nullptr || fb.depth_bits <= 0 || !cs.depth_write) return;
   // The clear depth is clamped to [0,1] (GL 2.1 §4.2.3) and converted like fragment depth:
   // round(z * (2^bits - 1)), in double so that 32-bit buffers are exact.
@@ -130,7 +133,7 @@ void clear_depth(Framebuffer& fb, const ClearState& cs, const Rect& r) {
     std::fill_n(fb.depth + static_cast<ptrdiff_t>(y) * fb.width + r.x0, r.w(), v);
 }
 
-void clear_stencil(Framebuffer& fb, const ClearState& cs, const Rect& r) {
+void clear_stencil(Framebuffer& fb, const ClearState& cs, const ClearRect& r) {
   if (fb.stencil == nullptr || fb.stencil_bits <= 0) return;
   // GL 2.1 §4.2.3: the clear value is masked to the stencil bits, then the write mask applies.
   const uint8_t value = static_cast<uint8_t>(cs.stencil & 0xff);
@@ -141,22 +144,16 @@ void clear_stencil(Framebuffer& fb, const ClearState& cs, const Rect& r) {
     if (wm == 0xff) {
       std::memset(p, value, static_cast<size_t>(r.w()));
     } else {
-      for (int x = 0; x < r.w(); ++x) p[x] = static_cast<uint8_t>((p[x] & ~wm) | (value & wm));
+      for (int x = 0; x < r.w(); ++x)
+        p[x] = static_cast<uint8_t>((p[x] & ~wm) | (value & wm));
     }
   }
 }
 
-void clear_rect(Framebuffer& fb, const ClearState& cs, GLbitfield mask, const Rect& r) {
-  if (r.w() <= 0 || r.h() <= 0) return;
-  if (mask & GL_COLOR_BUFFER_BIT) clear_color(fb, cs, r);
-  if (mask & GL_DEPTH_BUFFER_BIT) clear_depth(fb, cs, r);
-  if (mask & GL_STENCIL_BUFFER_BIT) clear_stencil(fb, cs, r);
-}
-
 } // namespace
 
-void clear_buffers(Framebuffer& fb, const ClearState& cs, GLbitfield mask, RasterWorkers* workers) {
-  Rect r{0, 0, fb.width, fb.height};
+ClearRect clear_rect(const Framebuffer& fb, const ClearState& cs) {
+  ClearRect r{0, 0, fb.width, fb.height};
   if (cs.scissor_test) {
     // GL 2.1 §4.2.3: clears pass the scissor test (§4.1.2) like fragments. 64-bit ends, so
     // that x + width cannot overflow.
@@ -167,24 +164,14 @@ void clear_buffers(Framebuffer& fb, const ClearState& cs, GLbitfield mask, Raste
     r.x1 = static_cast<int>(std::min<int64_t>(r.x1, x1));
     r.y1 = static_cast<int>(std::min<int64_t>(r.y1, y1));
   }
-  // A large clear is split into one run of rows per worker thread (raster/workers.h): each
-  // pixel is written once whoever writes it, so the result is the same.
-  const int64_t area = int64_t{std::max(r.w(), 0)} * std::max(r.h(), 0);
-  if (workers != nullptr && area >= kShareClearArea && r.h() >= 2 * kShareClearRows) {
-    const int n = std::min(workers->threads(), r.h() / kShareClearRows);
-    if (n > 1) {
-      auto job = [&](int i) {
-        if (i >= n) return;
-        Rect part = r;
-        part.y0 = r.y0 + static_cast<int>(int64_t{r.h()} * i / n);
-        part.y1 = r.y0 + static_cast<int>(int64_t{r.h()} * (i + 1) / n);
-        clear_rect(fb, cs, mask, part);
-      };
-      workers->run(job);
-      return;
-    }
-  }
-  clear_rect(fb, cs, mask, r);
+  return r;
+}
+
+void clear_buffers(Framebuffer& fb, const ClearState& cs, GLbitfield mask, const ClearRect& r) {
+  if (r.w() <= 0 || r.h() <= 0) return;
+  if (mask & GL_COLOR_BUFFER_BIT) clear_color(fb, cs, r);
+  if (mask & GL_DEPTH_BUFFER_BIT) clear_depth(fb, cs, r);
+  if (mask & GL_STENCIL_BUFFER_BIT) clear_stencil(fb, cs, r);
 }
 
 } // namespace pineda

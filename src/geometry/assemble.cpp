@@ -13,6 +13,8 @@
 #include <cstddef>
 #include <cstdint>
 
+#include "geometry/assemble.h"
+
 #include "fragment/fragment_ops.h"
 #include "geometry/clip.h"
 #include "geometry/cull.h"
@@ -141,21 +143,23 @@ private:
   }
 
   // Triangle a, b, c with c provoking.
-  void triangle(const PVertex& a, const PVertex& b, const PVertex& c, unsigned edges) {
+  [[gnu::always_inline]] void triangle(const PVertex& a, const PVertex& b, const PVertex& c,
+                                       unsigned edges) {
     triangle(a, b, c, edges, c);
   }
 
   // Triangle a, b, c whose flat colour comes from `pv`. The all-inside FILL case is the hot
   // path: snap, area, cull, rasterize.
-  void triangle(const PVertex& a, const PVertex& b, const PVertex& c, unsigned edges,
-                const PVertex& pv) {
+  [[gnu::always_inline]] void triangle(const PVertex& a, const PVertex& b, const PVertex& c,
+                                       unsigned edges, const PVertex& pv) {
     if ((a.clipmask & b.clipmask & c.clipmask & kClipRejectMask) != 0) return;
     if ((a.clipmask | b.clipmask | c.clipmask) != 0) {
       triangle_clipped(a, b, c, edges, pv);
       return;
     }
-    // A worker sharing the draw (draw_shared) skips at once the filled triangles that lie
-    // outside its rows, whichever way they face: raster_triangle would draw nothing of them.
+    // A worker sharing the draw by bands (raster/schedule.cpp) skips at once the filled triangles
+    // that lie outside its rows, whichever way they face: raster_triangle would draw nothing of
+    // them.
     if (fill_fast_ && bands_.count > 1 && !rows_owned(a, b, c)) return;
     const SnappedTri t = snap_triangle(a, b, c);
     const int64_t area2 = snapped_area2(t);
@@ -262,7 +266,8 @@ template <class Sink>
 
 template <class Sink>
 template <class Fetch>
-void Assembler<Sink>::run(GLenum mode, const Fetch& f, size_t count, size_t lo, size_t hi) {
+[[gnu::always_inline]] inline void Assembler<Sink>::run(GLenum mode, const Fetch& f, size_t count,
+                                                        size_t lo, size_t hi) {
   hi = std::min(hi, unit_count(mode, count));
   switch (mode) {
   case GL_POINTS:
@@ -371,188 +376,14 @@ void Assembler<Sink>::run(GLenum mode, const Fetch& f, size_t count, size_t lo, 
 }
 
 template <class Sink>
-void assemble(Sink& sink, const DrawCall& dc, GLenum mode, const PVertex* verts,
-              const uint32_t* indices, size_t count) {
+[[gnu::noinline]] void assemble(Sink& sink, const DrawCall& dc, GLenum mode, const PVertex* verts,
+                                const uint32_t* indices, size_t count) {
   if (verts == nullptr || count == 0 || dc.state == nullptr) return;
   Assembler<Sink> as(dc, sink);
   if (indices != nullptr)
     as.run(mode, IndexedFetch{verts, indices}, count);
   else
     as.run(mode, DirectFetch{verts}, count);
-}
-
-// Sharing a draw among the worker threads (raster/workers.h) costs each worker the assembly
-// and setup of every primitive and the caller a wake-up and a wait, some microseconds: only
-// draws with many vertices or a large window area are shared. One triangle per Begin/End
-// (immediate mode) stays on the calling thread.
-constexpr size_t kShareVertices = 1024;
-constexpr int64_t kShareArea = 32768; // pixels of the draw's window bounding box
-
-bool worth_sharing(const RasterState& rs, const FragCtx& frag, GLenum mode, const PVertex* verts,
-                   const uint32_t* indices, size_t count) {
-  if (count >= kShareVertices) return true;
-  const RasterModes& m = rs.modes;
-  // Lines and points cover little of their bounding box unless wide or smooth.
-  float pad = 1.0f;
-  if (mode == GL_POINTS) {
-    if (!m.point_smooth && (m.point_attenuated ? m.point_size_max : m.point_size) <= 2.0f)
-      return false;
-    pad += 0.5f * (m.point_attenuated ? m.point_size_max : m.point_size) + 1.0f;
-  } else if (mode == GL_LINES || mode == GL_LINE_STRIP || mode == GL_LINE_LOOP) {
-    if (!m.line_smooth && m.line_width < 2.5f) return false;
-    pad += 0.5f * m.line_width + 1.0f;
-  }
-  // The window bounding box of the vertices, clamped to the clip rectangle. A vertex outside
-  // the clip volume has no window position yet: its clip coordinates are projected here, and
-  // one with w <= 0 (whose primitives may reach anywhere) stands for the whole rectangle.
-  const Viewport& vp = rs.viewport;
-  const float cx0 = static_cast<float>(frag.clip_x0), cx1 = static_cast<float>(frag.clip_x1) + 1;
-  const float cy0 = static_cast<float>(frag.clip_y0), cy1 = static_cast<float>(frag.clip_y1) + 1;
-  float x0 = cx1, y0 = cy1, x1 = cx0, y1 = cy0;
-  for (size_t i = 0; i < count; ++i) {
-    const PVertex& v = verts[indices != nullptr ? indices[i] : i];
-    float x = v.win[0], y = v.win[1];
-    if (v.clipmask != 0) {
-      const float w = v.clip[3];
-      x = vp.x + (v.clip[0] / w + 1.0f) * 0.5f * vp.w;
-      y = vp.y + (v.clip[1] / w + 1.0f) * 0.5f * vp.h;
-      if (!(w > 0.0f) || !std::isfinite(x) || !std::isfinite(y)) {
-        x0 = cx0, y0 = cy0, x1 = cx1, y1 = cy1;
-        break;
-      }
-    }
-    x0 = std::min(x0, x - pad);
-    x1 = std::max(x1, x + pad);
-    y0 = std::min(y0, y - pad);
-    y1 = std::max(y1, y + pad);
-  }
-  x0 = std::max(x0, cx0), x1 = std::min(x1, cx1);
-  y0 = std::max(y0, cy0), y1 = std::min(y1, cy1);
-  if (!(x1 > x0 && y1 > y0)) return false;
-  const int64_t w = static_cast<int64_t>(x1 - x0), h = static_cast<int64_t>(y1 - y0);
-  return w > 0 && h > 0 && w * h >= kShareArea;
-}
-
-// Runs the draw on `n` threads: each assembles every primitive in order (with its own
-// fragment context, stipple counter and sample count) and rasterizes its bands' rows only.
-void draw_shared(const DrawCall& dc, const FragCtx& frag, int n, GLenum mode, const PVertex* verts,
-                 const uint32_t* indices, size_t count) {
-  uint64_t samples[kMaxRasterThreads] = {};
-  auto job = [&](int i) {
-    FragCtx local = frag;
-    DrawCall share = dc;
-    share.frag = &local;
-    float stipple_counter = 0.0f;
-    share.stipple_counter = &stipple_counter;
-    share.bands = Bands{n, i};
-    RasterSink sink{share};
-    assemble(sink, share, mode, verts, indices, count);
-    samples[i] = local.samples_passed;
-  };
-  dc.workers->run(job);
-  if (dc.samples_passed != nullptr)
-    for (int i = 0; i < n; ++i)
-      *dc.samples_passed += samples[i];
-}
-
-// Triangles each thread sets up per batch (bin.h). Measured on bench_lit_mesh at two threads:
-// 1024 per batch 16.5 ms, 4096 15.5 ms, 16384 14.1 ms: fewer barriers matter more than records
-// that stay in the cache.
-constexpr size_t kBatchTriangles = 16384;
-// Draws of at most this many units are set up by the calling thread alone before the workers
-// are woken: a full-screen quad would otherwise wait for a worker to wake up and set it up.
-constexpr size_t kCallerSetupUnits = 32;
-
-// Runs a draw of filled triangles on `n` threads in batches of two phases (bin.h): setup into
-// each thread's bins, then the tiles. Each thread has two sets of bins and sets up batch k + 1
-// into one while the tiles of batch k are drawn from the other, so one barrier per batch
-// separates the phases: when a thread passes barrier k, every thread has finished drawing
-// batch k - 1 (whose set batch k + 1 reuses) and setting up batch k.
-void draw_binned(const DrawCall& dc, const FragCtx& frag, int n, GLenum mode, const PVertex* verts,
-                 const uint32_t* indices, size_t count) {
-  const size_t units = unit_count(mode, count);
-  const size_t per_thread =
-      mode == GL_QUADS || mode == GL_QUAD_STRIP ? kBatchTriangles / 2 : kBatchTriangles;
-  const size_t batch = per_thread * static_cast<size_t>(n);
-  const size_t batches = (units + batch - 1) / batch;
-  const bool caller_setup = units <= kCallerSetupUnits;
-  const TileGrid grid = make_tile_grid(frag);
-  BinStore& store = dc.workers->bin_store();
-  uint64_t samples[kMaxRasterThreads] = {};
-  // The next tile of batch k to hand out, in next_tile[k & 1]: reset for batch k + 2 by
-  // thread 0 once barrier k + 1 shows every thread done with batch k.
-  std::atomic<int> next_tile[2] = {0, 0};
-  SpinBarrier barrier(n);
-  const auto nt = static_cast<size_t>(n);
-  // Phase 1 of batch k for thread i: its contiguous share of the batch's primitives.
-  const auto set_up = [&](int i, size_t k, size_t share_of, size_t shares) {
-    TriBins& b = store.sets[k & 1][i];
-    b.reset(grid);
-    DrawCall setup_dc = dc;
-    setup_dc.bands = Bands{};
-    setup_dc.stipple_counter = nullptr; // filled polygons have no stipple counter
-    const size_t first = k * batch, m = std::min(batch, units - first);
-    const size_t lo = first + m * share_of / shares, hi = first + m * (share_of + 1) / shares;
-    BinSink sink{setup_dc, b};
-    Assembler<BinSink> as(setup_dc, sink);
-    if (indices != nullptr)
-      as.run(mode, IndexedFetch{verts, indices}, count, lo, hi);
-    else
-      as.run(mode, DirectFetch{verts}, count, lo, hi);
-    b.link_shades();
-  };
-  if (caller_setup) {
-    set_up(0, 0, 0, 1);
-    for (int i = 1; i < n; ++i)
-      store.sets[0][i].reset(grid);
-  }
-  auto job = [&](int i) {
-    FragCtx local = frag;
-    DrawCall share = dc;
-    share.frag = &local;
-    share.bands = Bands{};
-    // Phase 2 of batch k: the tiles inside the union of the threads' binned ranges, handed
-    // out a run at a time, so a thread that started late (a worker waking up) takes fewer.
-    const auto draw_tiles = [&](size_t k) {
-      const TriBins* set[kMaxRasterThreads];
-      int tx0 = grid.tiles_x, ty0 = grid.tiles_y, tx1 = -1, ty1 = -1;
-      for (int t = 0; t < n; ++t) {
-        set[t] = &store.sets[k & 1][t];
-        tx0 = std::min(tx0, set[t]->tx0), tx1 = std::max(tx1, set[t]->tx1);
-        ty0 = std::min(ty0, set[t]->ty0), ty1 = std::max(ty1, set[t]->ty1);
-      }
-      if (tx1 < tx0 || ty1 < ty0) return;
-      const int w = tx1 - tx0 + 1, total = w * (ty1 - ty0 + 1);
-      const int run = std::max(1, total / (8 * n));
-      std::atomic<int>& next = next_tile[k & 1];
-      for (int j = next.fetch_add(run, std::memory_order_relaxed); j < total;
-           j = next.fetch_add(run, std::memory_order_relaxed))
-        for (int e = std::min(j + run, total); j < e; ++j) {
-          const auto tile = static_cast<size_t>((ty0 + j / w) * grid.tiles_x + tx0 + j % w);
-          bool empty = true;
-          for (int t = 0; t < n; ++t)
-            empty &= set[t]->head[tile] == kNoIndex;
-          if (!empty) raster_tile(share, local, set, n, static_cast<int>(tile));
-        }
-    };
-    if (!caller_setup) {
-      set_up(i, 0, static_cast<size_t>(i), nt);
-      barrier.arrive_and_wait();
-    }
-    for (size_t k = 0; k < batches; ++k) {
-      draw_tiles(k);
-      if (k + 1 < batches) {
-        if (i == 0 && k >= 1) next_tile[(k + 1) & 1].store(0, std::memory_order_relaxed);
-        set_up(i, k + 1, static_cast<size_t>(i), nt);
-        barrier.arrive_and_wait();
-      }
-    }
-    samples[i] = local.samples_passed;
-  };
-  dc.workers->run(job);
-  if (dc.samples_passed != nullptr)
-    for (int i = 0; i < n; ++i)
-      *dc.samples_passed += samples[i];
 }
 
 } // namespace
@@ -572,29 +403,30 @@ void draw_binned(const DrawCall& dc, const FragCtx& frag, int n, GLenum mode, co
 void draw_primitives(const DrawCall& dc, GLenum mode, const PVertex* verts, const uint32_t* indices,
                      size_t count) {
   // The fragment stage is set up once for the whole draw, not once per primitive, or comes
-  // with the draw (the context's draw cache).
+  // with the draw (the draw home's cache).
   if (dc.frag == nullptr) return draw_with_local_frag(dc, mode, verts, indices, count);
   const FragCtx* frag = dc.frag;
   frag->samples_passed = 0;
-  // The thread count first: with one thread (PINEDA_THREADS=1) no draw pays for the estimate.
-  const int n = dc.workers != nullptr ? dc.workers->threads() : 1;
-  if (n > 1 && !frag->noop && verts != nullptr &&
-      worth_sharing(*dc.state, *frag, mode, verts, indices, count)) {
-    // Filled triangles are set up once and binned into tiles; lines, points and outlined
-    // polygons (whose stipple counter runs through the draw) are shared by bands.
-    const RasterState& rs = *dc.state;
-    if (dc.workers->binned() && unit_count(mode, count) != 0 && rs.polygon_mode[0] == GL_FILL &&
-        rs.polygon_mode[1] == GL_FILL)
-      return draw_binned(dc, *frag, n, mode, verts, indices, count);
-    return draw_shared(dc, *frag, n, mode, verts, indices, count);
-  }
   DrawCall prepared = dc;
-  prepared.frag = frag;
   float stipple_counter = 0.0f;
   prepared.stipple_counter = &stipple_counter;
   RasterSink sink{prepared};
   assemble(sink, prepared, mode, verts, indices, count);
   if (dc.samples_passed != nullptr) *dc.samples_passed += frag->samples_passed;
+}
+
+size_t primitive_units(GLenum mode, size_t count) {
+  return unit_count(mode, count);
+}
+
+void assemble_to_bins(TriBins& bins, const DrawCall& dc, GLenum mode, const PVertex* verts,
+                      const uint32_t* indices, size_t count, size_t lo, size_t hi) {
+  BinSink sink{dc, bins};
+  Assembler<BinSink> as(dc, sink);
+  if (indices != nullptr)
+    as.run(mode, IndexedFetch{verts, indices}, count, lo, hi);
+  else
+    as.run(mode, DirectFetch{verts}, count, lo, hi);
 }
 
 void draw_primitives_to(PrimitiveSink& sink, const DrawCall& dc, GLenum mode, const PVertex* verts,

@@ -6,7 +6,7 @@
 
 #include <cstdint>
 
-#include "geometry/vertex.h"
+#include "core/vertex.h"
 #include "raster/raster.h"
 
 namespace pineda {

@@ -8,7 +8,7 @@
 #include <cstdint>
 
 #include "geometry/clip.h"
-#include "geometry/vertex.h"
+#include "core/vertex.h"
 #include "raster/raster.h"
 
 namespace pineda {
@@ -125,8 +125,9 @@ void emit_polygon(const FaceState& fs, Sink& sink, const PVertex* const* v, cons
   }
 }
 
-// The test seam: a sink with virtual members, and the assembler instantiated for it. draw_
-// primitives() itself uses a sink that calls raster_* directly (no indirection).
+// The test seam and the selection and feedback path: a sink with virtual members, and the
+// assembler instantiated for it (draw_primitives_to, assemble.h). draw_primitives() itself uses
+// a sink that calls raster_* directly (no indirection).
 class PrimitiveSink {
 public:
   // GL 2.1 §5.2, §5.3: selection and feedback report every polygon that survives clipping and
@@ -138,8 +139,5 @@ public:
   virtual void line(const PVertex& a, const PVertex& b, const PVertex& provoking) = 0;
   virtual void point(const PVertex& p) = 0;
 };
-
-void draw_primitives_to(PrimitiveSink& sink, const DrawCall& dc, GLenum mode, const PVertex* verts,
-                        const uint32_t* indices, size_t count);
 
 } // namespace pineda

@@ -1,6 +1,6 @@
 // The GL 2.1 §2.14.1 lighting equation, evaluated in float per vertex as llvmpipe's
 // fixed-function vertex program does, with everything that does not depend on the vertex
-// computed once per draw by setup_lighting.
+// computed once per draw by the lighting area (state/lighting.cpp, setup_lighting).
 #include "geometry/light_eval.h"
 
 #include <cmath>
@@ -8,24 +8,11 @@
 #include <glm/mat3x3.hpp>
 #include <glm/matrix.hpp>
 
-#include "geometry/vertex.h"
+#include "core/vertex.h"
 
 namespace pineda {
 
 namespace {
-
-inline float dot3(const float* a, const float* b) {
-  return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
-}
-
-// Scale v to unit length; a zero vector stays zero.
-inline void normalize3(float* v) {
-  const float len2 = dot3(v, v);
-  if (len2 > 0.0f) {
-    const float inv = 1.0f / std::sqrt(len2);
-    v[0] *= inv, v[1] *= inv, v[2] *= inv;
-  }
-}
 
 inline float clamp01(float v) {
   return v > 0.0f ? (v < 1.0f ? v : 1.0f) : 0.0f;
@@ -82,90 +69,6 @@ inline float spec_power(float n_dot_h, float shininess) {
 
 } // namespace
 
-void setup_lighting(LightSetup& s, const LightingState& ls, const glm::mat4& modelview,
-                    bool normalize, bool rescale) {
-  s.count = 0;
-  s.local_viewer = ls.local_viewer;
-  s.two_side = ls.two_side;
-  s.separate_specular = ls.color_control == GL_SEPARATE_SPECULAR_COLOR;
-  s.need_eye_position = ls.local_viewer;
-  for (int c = 0; c < 4; ++c)
-    s.scene_ambient[c] = ls.model_ambient[c];
-  for (int i = 0; i < kMaxLights; ++i) {
-    const Light& src = ls.light[i];
-    if (!src.enabled) continue;
-    LightConstants& l = s.light[s.count++];
-    for (int c = 0; c < 3; ++c) {
-      l.ambient[c] = src.ambient[c];
-      l.diffuse[c] = src.diffuse[c];
-      l.specular[c] = src.specular[c];
-    }
-    const float w = src.position[3];
-    l.positional = w != 0.0f;
-    if (l.positional) {
-      // The vector from a vertex to the light is between two points (§2.14.1), so the
-      // homogeneous position is projected first.
-      for (int c = 0; c < 3; ++c)
-        l.position[c] = src.position[c] / w;
-      s.need_eye_position = true;
-    } else {
-      for (int c = 0; c < 3; ++c)
-        l.direction[c] = src.position[c];
-      normalize3(l.direction);
-      // Eq. 2.3 with an infinite viewer: h = VPpli + (0, 0, 1), the same for every vertex.
-      l.half[0] = l.direction[0];
-      l.half[1] = l.direction[1];
-      l.half[2] = l.direction[2] + 1.0f;
-      normalize3(l.half);
-    }
-    l.spot = src.spot_cutoff != 180.0f;
-    for (int c = 0; c < 3; ++c)
-      l.spot_direction[c] = src.spot_direction[c];
-    normalize3(l.spot_direction);
-    l.spot_cos = static_cast<float>(std::cos(src.spot_cutoff * (3.14159265358979323846 / 180.0)));
-    l.spot_exponent = src.spot_exponent;
-    l.spot_factor = 1.0f;
-    if (l.spot && !l.positional) {
-      // Eq. 2.5 for a light at infinity: PpliV is -VPpli for every vertex.
-      const float d = -dot3(l.direction, l.spot_direction);
-      l.spot_factor = d >= l.spot_cos ? std::pow(d, l.spot_exponent) : 0.0f;
-    }
-    // Eq. 2.4: attenuation applies to positional lights only.
-    for (int c = 0; c < 3; ++c)
-      l.k[c] = src.attenuation[c];
-    l.attenuated = l.positional && (l.k[0] != 1.0f || l.k[1] != 0.0f || l.k[2] != 0.0f);
-  }
-
-  // COLOR_MATERIAL (§2.14.3).
-  const GLenum mode = ls.color_material_mode;
-  const GLenum face = ls.color_material_face;
-  s.track[0] = ls.color_material && face != GL_BACK;
-  s.track[1] = ls.color_material && face != GL_FRONT;
-  s.track_ambient = mode == GL_AMBIENT || mode == GL_AMBIENT_AND_DIFFUSE;
-  s.track_diffuse = mode == GL_DIFFUSE || mode == GL_AMBIENT_AND_DIFFUSE;
-  s.track_specular = mode == GL_SPECULAR;
-  s.track_emission = mode == GL_EMISSION;
-
-  // §2.11.3: normals go to eye space by the inverse of the model-view's upper left 3x3
-  // (multiplying the row vector from the left); as a column-vector product that is the
-  // inverse transpose. Rescale multiplies by 1 / |third row of the inverse|; NORMALIZE makes
-  // every normal unit length after the transformation and takes precedence.
-  const glm::dmat3 inv = glm::inverse(glm::dmat3(glm::dmat4(modelview)));
-  const glm::dmat3 nm = glm::transpose(inv);
-  double f = 1.0;
-  if (rescale && !normalize) {
-    const double len2 = inv[0][2] * inv[0][2] + inv[1][2] * inv[1][2] + inv[2][2] * inv[2][2];
-    if (len2 > 0.0) f = 1.0 / std::sqrt(len2);
-  }
-  for (int col = 0; col < 3; ++col)
-    for (int row = 0; row < 3; ++row)
-      s.normal_matrix[col * 3 + row] = static_cast<float>(nm[col][row] * f);
-  s.normalize = normalize;
-  const float* mv = &modelview[0][0];
-  for (int i = 0; i < 16; ++i)
-    s.modelview[i] = mv[i];
-}
-
 void prepare_lit_faces(const LightSetup& s, const Material* mat, const float color[4],
                        LitFaces& out) {
   const int faces = s.two_side ? 2 : 1;
@@ -203,7 +106,7 @@ void light_vertex_faces(const LightSetup& s, const LitFaces& faces, const float 
   float n[3];
   for (int r = 0; r < 3; ++r)
     n[r] = nm[r] * normal[0] + nm[3 + r] * normal[1] + nm[6 + r] * normal[2];
-  if (s.normalize) normalize3(n);
+  if (s.normalize) light_normalize3(n);
 
   // Eye-space position, needed for positional lights and the local viewer.
   float v[3] = {0.0f, 0.0f, 0.0f};
@@ -218,7 +121,7 @@ void light_vertex_faces(const LightSetup& s, const LitFaces& faces, const float 
   }
   // VPe: the unit vector from the vertex to the eye at the origin (local viewer).
   float ve[3] = {-v[0], -v[1], -v[2]};
-  if (s.local_viewer) normalize3(ve);
+  if (s.local_viewer) light_normalize3(ve);
 
   LightTerms terms[kMaxLights];
   for (int i = 0; i < s.count; ++i) {
@@ -229,7 +132,7 @@ void light_vertex_faces(const LightSetup& s, const LitFaces& faces, const float 
     if (l.positional) {
       for (int c = 0; c < 3; ++c)
         vp[c] = l.position[c] - v[c];
-      const float d2 = dot3(vp, vp);
+      const float d2 = light_dot3(vp, vp);
       const float d = std::sqrt(d2);
       if (d > 0.0f) {
         const float inv = 1.0f / d;
@@ -237,7 +140,7 @@ void light_vertex_faces(const LightSetup& s, const LitFaces& faces, const float 
       }
       if (l.attenuated) scale = 1.0f / (l.k[0] + l.k[1] * d + l.k[2] * d2);
       if (l.spot) {
-        const float sd = -dot3(vp, l.spot_direction);
+        const float sd = -light_dot3(vp, l.spot_direction);
         scale *= sd >= l.spot_cos ? lit_pow(sd, l.spot_exponent) : 0.0f;
       }
     } else {
@@ -248,16 +151,16 @@ void light_vertex_faces(const LightSetup& s, const LitFaces& faces, const float 
     if (s.local_viewer) {
       for (int c = 0; c < 3; ++c)
         h[c] = vp[c] + ve[c];
-      normalize3(h);
+      light_normalize3(h);
     } else if (l.positional) {
       h[0] = vp[0], h[1] = vp[1], h[2] = vp[2] + 1.0f;
-      normalize3(h);
+      light_normalize3(h);
     } else {
       h[0] = l.half[0], h[1] = l.half[1], h[2] = l.half[2];
     }
     t.scale = scale;
-    t.n_dot_vp = dot3(n, vp);
-    t.n_dot_h = dot3(n, h);
+    t.n_dot_vp = light_dot3(n, vp);
+    t.n_dot_h = light_dot3(n, h);
   }
 
   shade_face(s, faces.face[0], terms, 1.0f, attr + kAttrColor, attr + kAttrColor2);

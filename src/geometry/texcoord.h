@@ -7,7 +7,7 @@
 
 #include <cstdint>
 
-#include "geometry/vertex.h"
+#include "core/vertex.h"
 
 namespace pineda {
 

@@ -11,20 +11,6 @@
 
 namespace pineda {
 
-#if defined(PINEDA_VERTEX_AVX2)
-// vertex_simd_avx2.cpp: whole groups of eight vertices; they return how many they did.
-size_t transform_positions_avx2(const float* m, const ClipSetup& cs, const Viewport& vp,
-                                const InputVertex* in, PVertex* out, size_t n);
-size_t light_vertices_avx2(const LightSetup& s, const LitFaces& faces, const InputVertex* in,
-                           PVertex* out, size_t n);
-
-// vertex_simd_avx512.cpp: whole groups of sixteen vertices, the same way.
-size_t transform_positions_avx512(const float* m, const ClipSetup& cs, const Viewport& vp,
-                                  const InputVertex* in, PVertex* out, size_t n);
-size_t light_vertices_avx512(const LightSetup& s, const LitFaces& faces, const InputVertex* in,
-                             PVertex* out, size_t n);
-#endif
-
 void transform_positions(const float* m, const ClipSetup& cs, const Viewport& vp,
                          const InputVertex* in, PVertex* out, size_t n) {
   size_t i = 0;

@@ -9,10 +9,10 @@
 
 #include <cstddef>
 
-#include "core/context.h"
+#include "geometry/input_vertex.h"
 #include "geometry/clip.h"
 #include "geometry/light_eval.h"
-#include "geometry/vertex.h"
+#include "core/vertex.h"
 
 namespace pineda {
 
@@ -24,5 +24,17 @@ void transform_positions(const float* m, const ClipSetup& cs, const Viewport& vp
 // The lit colours of in[k] written to out[k].attr as light_vertex_faces writes them.
 void light_vertices(const LightSetup& s, const LitFaces& faces, const InputVertex* in, PVertex* out,
                     size_t n);
+
+// The wider instances, called only at their SIMD level (core/simd_level.h): whole groups of
+// eight vertices (vertex_simd_avx2.cpp) or sixteen (vertex_simd_avx512.cpp); they return how
+// many they did.
+size_t transform_positions_avx2(const float* m, const ClipSetup& cs, const Viewport& vp,
+                                const InputVertex* in, PVertex* out, size_t n);
+size_t light_vertices_avx2(const LightSetup& s, const LitFaces& faces, const InputVertex* in,
+                           PVertex* out, size_t n);
+size_t transform_positions_avx512(const float* m, const ClipSetup& cs, const Viewport& vp,
+                                  const InputVertex* in, PVertex* out, size_t n);
+size_t light_vertices_avx512(const LightSetup& s, const LitFaces& faces, const InputVertex* in,
+                             PVertex* out, size_t n);
 
 } // namespace pineda

@@ -2,6 +2,7 @@
 // x86-64 (CMakeLists.txt) and called only when the CPU has AVX2 (vertex_simd.cpp). Elsewhere
 // the file is empty.
 #if defined(__AVX2__)
+#include "geometry/vertex_simd.h"
 #include "geometry/vertex_simd_impl.h"
 
 namespace pineda {

@@ -4,6 +4,7 @@
 // of the AVX2 lanes, which matters on Zen 4 (512-bit operations issue as two 256-bit halves).
 // Elsewhere the file is empty.
 #if defined(__AVX512F__)
+#include "geometry/vertex_simd.h"
 #include "geometry/vertex_simd_impl.h"
 
 namespace pineda {

@@ -13,10 +13,10 @@
 #include <cstdint>
 #include <cstring>
 
-#include "core/context.h"
+#include "geometry/input_vertex.h"
 #include "geometry/clip.h"
 #include "geometry/light_eval.h"
-#include "geometry/vertex.h"
+#include "core/vertex.h"
 
 #if defined(__SSE2__)
 #include <immintrin.h>

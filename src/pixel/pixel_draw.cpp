@@ -257,7 +257,7 @@ void draw_stencil_rect(const RasterState& rs, const Framebuffer& fb, const Pixel
     cx1 = static_cast<int>(std::min<int64_t>(cx1, int64_t{rs.scissor[0]} + rs.scissor[2]));
     cy1 = static_cast<int>(std::min<int64_t>(cy1, int64_t{rs.scissor[1]} + rs.scissor[3]));
   }
-  const uint8_t wm = static_cast<uint8_t>(rs.stencil_writemask & 0xffu);
+  const uint8_t wm = static_cast<uint8_t>(rs.stencil.writemask & 0xffu);
   if (wm == 0) return;
   std::vector<int> col_lo, col_hi, row_lo, row_hi;
   group_spans(p.w, p.col0, p.x, p.zoom_x, col_lo, col_hi);

@@ -3,7 +3,7 @@
 // glCopyPixels.
 #pragma once
 
-#include "geometry/vertex.h"
+#include "core/limits.h"
 
 namespace pineda {
 

@@ -18,19 +18,19 @@ int pixel_map_size_id(GLenum pname) {
   return -1;
 }
 
-bool rgba_transfer_active(const PixelTransfer& xfer) {
-  if (xfer.map_color) return true;
+bool rgba_transfer_active(const PixelTransferView& xfer) {
+  if (xfer.mode.map_color) return true;
   for (int c = 0; c < 4; ++c)
-    if (xfer.scale[c] != 1.0f || xfer.bias[c] != 0.0f) return true;
+    if (xfer.mode.scale[c] != 1.0f || xfer.mode.bias[c] != 0.0f) return true;
   return false;
 }
 
-bool depth_transfer_active(const PixelTransfer& xfer) {
-  return xfer.depth_scale != 1.0f || xfer.depth_bias != 0.0f;
+bool depth_transfer_active(const PixelTransferView& xfer) {
+  return xfer.mode.depth_scale != 1.0f || xfer.mode.depth_bias != 0.0f;
 }
 
-bool stencil_transfer_active(const PixelTransfer& xfer) {
-  return xfer.map_stencil || xfer.index_shift != 0 || xfer.index_offset != 0;
+bool stencil_transfer_active(const PixelTransferView& xfer) {
+  return xfer.mode.map_stencil || xfer.mode.index_shift != 0 || xfer.mode.index_offset != 0;
 }
 
 namespace {
@@ -51,42 +51,42 @@ float lookup_index(const PixelMap& map, uint32_t index) {
 
 } // namespace
 
-void transfer_rgba(const PixelTransfer& xfer, float* rgba, size_t count) {
+void transfer_rgba(const PixelTransferView& xfer, float* rgba, size_t count) {
   bool scale_bias = false;
   for (int c = 0; c < 4; ++c)
-    scale_bias |= xfer.scale[c] != 1.0f || xfer.bias[c] != 0.0f;
+    scale_bias |= xfer.mode.scale[c] != 1.0f || xfer.mode.bias[c] != 0.0f;
   if (scale_bias) {
     for (size_t i = 0; i < count; ++i)
       for (int c = 0; c < 4; ++c)
-        rgba[i * 4 + c] = rgba[i * 4 + c] * xfer.scale[c] + xfer.bias[c];
+        rgba[i * 4 + c] = rgba[i * 4 + c] * xfer.mode.scale[c] + xfer.mode.bias[c];
   }
-  if (xfer.map_color) {
-    const PixelMap* maps = &xfer.maps[kMapRtoR];
+  if (xfer.mode.map_color) {
+    const PixelMap* maps = &xfer.maps.maps[kMapRtoR];
     for (size_t i = 0; i < count; ++i)
       for (int c = 0; c < 4; ++c)
         rgba[i * 4 + c] = lookup_component(maps[c], rgba[i * 4 + c]);
   }
 }
 
-void transfer_depth(const PixelTransfer& xfer, float* depth, size_t count) {
+void transfer_depth(const PixelTransferView& xfer, float* depth, size_t count) {
   if (!depth_transfer_active(xfer)) return;
   for (size_t i = 0; i < count; ++i)
-    depth[i] = depth[i] * xfer.depth_scale + xfer.depth_bias;
+    depth[i] = depth[i] * xfer.mode.depth_scale + xfer.mode.depth_bias;
 }
 
-uint32_t shift_offset_index(const PixelTransfer& xfer, uint32_t index) {
+uint32_t shift_offset_index(const PixelTransferView& xfer, uint32_t index) {
   // Shifts of 32 or more bits leave nothing of a 32-bit index (zero-filled, §3.6.5).
-  const int s = xfer.index_shift;
+  const int s = xfer.mode.index_shift;
   if (s > 0)
     index = s >= 32 ? 0u : index << s;
   else if (s < 0)
     index = s <= -32 ? 0u : index >> -s;
-  return index + static_cast<uint32_t>(xfer.index_offset);
+  return index + static_cast<uint32_t>(xfer.mode.index_offset);
 }
 
-void color_index_to_rgba(const PixelTransfer& xfer, const uint32_t* index, size_t count,
+void color_index_to_rgba(const PixelTransferView& xfer, const uint32_t* index, size_t count,
                          float* rgba) {
-  const PixelMap* maps = &xfer.maps[kMapItoR];
+  const PixelMap* maps = &xfer.maps.maps[kMapItoR];
   for (size_t i = 0; i < count; ++i) {
     const uint32_t v = shift_offset_index(xfer, index[i]);
     for (int c = 0; c < 4; ++c)
@@ -94,13 +94,13 @@ void color_index_to_rgba(const PixelTransfer& xfer, const uint32_t* index, size_
   }
 }
 
-void transfer_stencil(const PixelTransfer& xfer, uint32_t* index, size_t count) {
-  if (xfer.index_shift != 0 || xfer.index_offset != 0) {
+void transfer_stencil(const PixelTransferView& xfer, uint32_t* index, size_t count) {
+  if (xfer.mode.index_shift != 0 || xfer.mode.index_offset != 0) {
     for (size_t i = 0; i < count; ++i)
       index[i] = shift_offset_index(xfer, index[i]);
   }
-  if (xfer.map_stencil) {
-    const PixelMap& map = xfer.maps[kMapStoS];
+  if (xfer.mode.map_stencil) {
+    const PixelMap& map = xfer.maps.maps[kMapStoS];
     // S_TO_S entries are integers (rounded when specified, §3.6.3); negative ones wrap like
     // any other index arithmetic.
     for (size_t i = 0; i < count; ++i)

@@ -306,7 +306,7 @@ size_t client_image_bytes(int w, int h, int d, GLenum format, GLenum type, const
 }
 
 void unpack_rgba(const void* pixels, int w, int h, int d, GLenum format, GLenum type,
-                 const PixelStore& st, const PixelTransfer& xfer, float* out) {
+                 const PixelStore& st, const PixelTransferView& xfer, float* out) {
   ClientLayout l;
   if (w <= 0 || h <= 0 || d <= 0 || !client_layout(w, h, format, type, st, l)) return;
   const uint8_t* base = static_cast<const uint8_t*>(pixels);
@@ -329,7 +329,7 @@ void unpack_rgba(const void* pixels, int w, int h, int d, GLenum format, GLenum 
 }
 
 void unpack_depth(const void* pixels, int w, int h, int d, GLenum type, const PixelStore& st,
-                  const PixelTransfer& xfer, float* out) {
+                  const PixelTransferView& xfer, float* out) {
   ClientLayout l;
   if (w <= 0 || h <= 0 || d <= 0 || type == GL_BITMAP || is_packed_pixel_type(type) ||
       !client_layout(w, h, GL_DEPTH_COMPONENT, type, st, l))
@@ -345,7 +345,7 @@ void unpack_depth(const void* pixels, int w, int h, int d, GLenum type, const Pi
 }
 
 void unpack_index(const void* pixels, int w, int h, int d, GLenum format, GLenum type,
-                  const PixelStore& st, const PixelTransfer& xfer, uint32_t* out) {
+                  const PixelStore& st, const PixelTransferView& xfer, uint32_t* out) {
   ClientLayout l;
   if (w <= 0 || h <= 0 || d <= 0 || !is_index_format(format) ||
       !client_layout(w, h, format, type, st, l))

@@ -61,17 +61,17 @@ size_t client_image_bytes(int w, int h, int d, GLenum format, GLenum type, const
 // `format` must be a colour format or COLOR_INDEX and the pair must pass
 // check_pixel_format_type; otherwise `out` is left untouched.
 void unpack_rgba(const void* pixels, int w, int h, int d, GLenum format, GLenum type,
-                 const PixelStore& st, const PixelTransfer& xfer, float* out);
+                 const PixelStore& st, const PixelTransferView& xfer, float* out);
 
 // DEPTH_COMPONENT groups to floats (Table 2.9), depth scale and bias applied (§3.6.5); not
 // clamped.
 void unpack_depth(const void* pixels, int w, int h, int d, GLenum type, const PixelStore& st,
-                  const PixelTransfer& xfer, float* out);
+                  const PixelTransferView& xfer, float* out);
 
 // COLOR_INDEX or STENCIL_INDEX groups to integer indices (floats truncated), with §3.6.5
 // "Arithmetic on Indices" applied; for STENCIL_INDEX also the S_TO_S lookup when MAP_STENCIL.
 void unpack_index(const void* pixels, int w, int h, int d, GLenum format, GLenum type,
-                  const PixelStore& st, const PixelTransfer& xfer, uint32_t* out);
+                  const PixelStore& st, const PixelTransferView& xfer, uint32_t* out);
 
 // Float RGBA (after any transfer operations) to client memory (§4.3.2): L = R + G + B for the
 // luminance formats, every component clamped to [0, 1], converted per Table 4.7 and placed

@@ -1,7 +1,7 @@
 // Binned rasterization of filled triangles shared by the worker threads (issue 6).
 //
 // A shared draw of filled triangles runs in batches of two phases, every worker thread taking
-// part in both (geometry/assemble.cpp, draw_binned):
+// part in both (raster/schedule.cpp, draw_binned):
 //  1. Setup. Each thread takes its own contiguous run of the batch's primitives, in API order,
 //     and runs assembly, clipping, culling and triangle setup (edge functions, bounding box,
 //     the coverage of one-block triangles and the interpolation planes) once per triangle. The

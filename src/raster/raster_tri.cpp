@@ -8,7 +8,7 @@
 #include <new>
 
 #include "fragment/fragment_ops.h"
-#include "fragment/simd.h"
+#include "core/simd.h"
 #include "raster/bin.h"
 #include "raster/raster.h"
 #include "raster/setup.h"

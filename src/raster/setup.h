@@ -20,7 +20,7 @@
 #include <cstdint>
 
 #include "fragment/fragment_ops.h"
-#include "geometry/vertex.h"
+#include "core/vertex.h"
 #include "raster/raster.h"
 
 namespace pineda {

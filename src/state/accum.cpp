@@ -3,9 +3,10 @@
 #include <algorithm>
 #include <cstdint>
 
-#include "core/api_util.h"
+#include "state/api_util.h"
 #include "dispatch.h"
 #include "framebuffer/accum.h"
+#include "state/area.h"
 
 namespace pineda {
 
@@ -15,8 +16,8 @@ namespace {
 // accumulation clear both honour the scissor (GL 2.1 §4.2.3, §4.2.4, as Mesa does).
 AccumRect accum_rect(const Context* ctx) {
   AccumRect r{0, 0, ctx->fb.width, ctx->fb.height};
-  if (ctx->scissor_test) {
-    const GLint* s = ctx->scissor_box;
+  if (ctx->scissor.test) {
+    const GLint* s = ctx->scissor.box;
     r.x0 = std::max(r.x0, s[0]);
     r.y0 = std::max(r.y0, s[1]);
     r.x1 = static_cast<int>(std::min<int64_t>(r.x1, int64_t{s[0]} + s[2]));
@@ -36,6 +37,37 @@ void accum_clear(Context* ctx) {
   if (ctx->fb.accum == nullptr) return; // GL 2.1 §4.2.3: no such buffer, no effect
   accum_fill(ctx->fb, ctx->accum.clear, accum_rect(ctx));
 }
+
+namespace {
+
+bool get_accum(Context& ctx, GLenum pname, QueryValues& out) {
+  switch (pname) {
+  // GL 2.1 Table 6.34: 16 signed bits per channel, as Mesa allocates for any request.
+  case GL_ACCUM_RED_BITS:
+  case GL_ACCUM_GREEN_BITS:
+  case GL_ACCUM_BLUE_BITS:
+  case GL_ACCUM_ALPHA_BITS:
+    out.ints({ctx.fb.accum != nullptr ? double(ctx.fb.accum_bits) : 0.0});
+    return true;
+  case GL_ACCUM_CLEAR_VALUE:
+    out.normalized(ctx.accum.clear, 4);
+    return true;
+  default:
+    return false;
+  }
+}
+
+constexpr AttribGroup kAccumGroups[] = {
+    member_group<&Context::accum>(GL_ACCUM_BUFFER_BIT, 0),
+};
+
+} // namespace
+
+const StateArea kAccumArea = {
+    .name = "accumulation buffer (GL 2.1 §4.2.4, Table 6.22)",
+    .get = get_accum,
+    .groups = kAccumGroups,
+};
 
 namespace exec {
 
@@ -59,7 +91,7 @@ void GLAPIENTRY Accum(GLenum op, GLfloat value) {
   // (§4.2.4); with the draw buffer NONE there are none.
   bool write[4];
   for (int k = 0; k < 4; ++k)
-    write[k] = ctx->color_mask[k] && ctx->draw_buffer != GL_NONE;
+    write[k] = ctx->color_buffer.color_mask[k] && ctx->color_buffer.draw_buffer != GL_NONE;
   // §4.2.4: LOAD and ACCUM read the read buffer; RETURN writes every draw buffer.
   if (op != GL_RETURN) {
     Framebuffer source = read_view(ctx->fb);

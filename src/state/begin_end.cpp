@@ -1,10 +1,12 @@
-// glBegin/glEnd, glVertex and the current attributes, glRect (GL 2.1 §2.6, §2.7, §2.10).
+// glBegin/glEnd, glVertex and the current attributes, glRect (GL 2.1 §2.6, §2.7, §2.10), and
+// the current-values area (Table 6.5, current.h): its queries and CURRENT_BIT.
 #include <cstdint>
 
-#include "core/api_util.h"
+#include "state/api_util.h"
 #include "core/normalize.h"
 #include "dispatch.h"
-#include "geometry/geometry.h"
+#include "state/draw_call.h"
+#include "state/area.h"
 
 namespace pineda {
 
@@ -13,21 +15,21 @@ namespace {
 // A vertex appended to the primitive being assembled with the current attributes (GL 2.1
 // §2.7); the caller sets its position. Inline here: glVertex is the hottest entry point.
 inline InputVertex& push_current_vertex(Context* ctx) {
-  InputVertex& v = ctx->imm.emplace_back();
+  InputVertex& v = ctx->imm.verts.emplace_back();
   for (int i = 0; i < 4; ++i)
-    v.color[i] = ctx->cur_color[i];
+    v.color[i] = ctx->current.color[i];
   for (int i = 0; i < 3; ++i)
-    v.normal[i] = ctx->cur_normal[i];
+    v.normal[i] = ctx->current.normal[i];
   for (int i = 0; i < 3; ++i)
-    v.color2[i] = ctx->cur_color2[i];
-  v.fog = ctx->texpipe.cur_fog_coord;
-  v.edge = ctx->cur_edge ? 1u : 0u;
+    v.color2[i] = ctx->current.color2[i];
+  v.fog = ctx->current.fog_coord;
+  v.edge = ctx->current.edge ? 1u : 0u;
   // Only the units this primitive's draw reads (usually none): the rest of the vertex's
   // second cache line is never touched.
-  for (uint32_t units = ctx->imm_tex_units; units != 0; units &= units - 1) {
+  for (uint32_t units = ctx->imm.tex_units; units != 0; units &= units - 1) {
     const int u = __builtin_ctz(units);
     for (int i = 0; i < 4; ++i)
-      v.tex[u][i] = ctx->cur_tex[u][i];
+      v.tex[u][i] = ctx->current.tex[u][i];
   }
   return v;
 }
@@ -35,7 +37,7 @@ inline InputVertex& push_current_vertex(Context* ctx) {
 inline void vertex(float x, float y, float z, float w) {
   Context* ctx = current_context();
   // GL 2.1 §2.7: a Vertex outside Begin/End has undefined effect; Pineda ignores it.
-  if (ctx == nullptr || ctx->begin_mode == kOutsideBeginEnd) return;
+  if (ctx == nullptr || ctx->imm.mode == kOutsideBeginEnd) return;
   InputVertex& v = push_current_vertex(ctx);
   v.pos[0] = x, v.pos[1] = y, v.pos[2] = z, v.pos[3] = w;
 }
@@ -43,7 +45,8 @@ inline void vertex(float x, float y, float z, float w) {
 inline void color(float r, float g, float b, float a) {
   Context* ctx = current_context();
   if (ctx == nullptr) return;
-  ctx->cur_color[0] = r, ctx->cur_color[1] = g, ctx->cur_color[2] = b, ctx->cur_color[3] = a;
+  ctx->current.color[0] = r, ctx->current.color[1] = g, ctx->current.color[2] = b,
+  ctx->current.color[3] = a;
   // GL 2.1 §2.14.3: tracked material properties follow every change of the current colour.
   if (ctx->lighting.color_material) update_color_material(ctx);
 }
@@ -52,26 +55,26 @@ inline void color(float r, float g, float b, float a) {
 inline void secondary_color(float r, float g, float b) {
   Context* ctx = current_context();
   if (ctx == nullptr) return;
-  ctx->cur_color2[0] = r, ctx->cur_color2[1] = g, ctx->cur_color2[2] = b;
+  ctx->current.color2[0] = r, ctx->current.color2[1] = g, ctx->current.color2[2] = b;
 }
 
 inline void normal(float x, float y, float z) {
   Context* ctx = current_context();
   if (ctx == nullptr) return;
-  ctx->cur_normal[0] = x, ctx->cur_normal[1] = y, ctx->cur_normal[2] = z;
+  ctx->current.normal[0] = x, ctx->current.normal[1] = y, ctx->current.normal[2] = z;
 }
 
 inline void texcoord(float s, float t, float r, float q) {
   Context* ctx = current_context();
   if (ctx == nullptr) return;
-  float* tc = ctx->cur_tex[0];
+  float* tc = ctx->current.tex[0];
   tc[0] = s, tc[1] = t, tc[2] = r, tc[3] = q;
 }
 
 template <typename T> void rect(T x1, T y1, T x2, T y2) {
   Context* ctx = current_context();
   if (ctx == nullptr) return;
-  if (ctx->begin_mode != kOutsideBeginEnd) {
+  if (ctx->imm.mode != kOutsideBeginEnd) {
     record_error(ctx, GL_INVALID_OPERATION, "glRect");
     return;
   }
@@ -84,7 +87,70 @@ template <typename T> void rect(T x1, T y1, T x2, T y2) {
   exec::End();
 }
 
+// Table 6.5: the current values and the current raster position (§2.13) with its data.
+bool get_current(Context& ctx, GLenum pname, QueryValues& out) {
+  const CurrentGroup& c = ctx.current;
+  const RasterPos& rp = c.raster_pos;
+  switch (pname) {
+  case GL_CURRENT_COLOR:
+    out.normalized(c.color, 4);
+    return true;
+  case GL_CURRENT_SECONDARY_COLOR:
+    out.normalized(c.color2, 4);
+    return true;
+  case GL_CURRENT_NORMAL:
+    out.normalized(c.normal, 3);
+    return true;
+  case GL_CURRENT_TEXTURE_COORDS:
+    out.floats(c.tex[ctx.texture.active], 4);
+    return true;
+  case GL_CURRENT_FOG_COORD:
+    out.floats({c.fog_coord});
+    return true;
+  // A float like the current colour (GetIntegerv rounds it, §6.1.2).
+  case GL_CURRENT_INDEX:
+    out.floats({c.index});
+    return true;
+  case GL_EDGE_FLAG:
+    out.boolean(c.edge);
+    return true;
+  case GL_CURRENT_RASTER_POSITION:
+    out.floats(rp.win, 4);
+    return true;
+  case GL_CURRENT_RASTER_POSITION_VALID:
+    out.boolean(rp.valid);
+    return true;
+  case GL_CURRENT_RASTER_DISTANCE:
+    out.floats({rp.distance});
+    return true;
+  case GL_CURRENT_RASTER_COLOR:
+    out.normalized(rp.color, 4);
+    return true;
+  case GL_CURRENT_RASTER_SECONDARY_COLOR:
+    out.normalized(rp.color2, 4);
+    return true;
+  case GL_CURRENT_RASTER_INDEX:
+    out.floats({rp.index});
+    return true;
+  case GL_CURRENT_RASTER_TEXTURE_COORDS:
+    out.floats(rp.tex[ctx.texture.active], 4);
+    return true;
+  default:
+    return false;
+  }
+}
+
+constexpr AttribGroup kCurrentGroups[] = {
+    member_group<&Context::current>(GL_CURRENT_BIT, 0),
+};
+
 } // namespace
+
+const StateArea kCurrentArea = {
+    .name = "current values (GL 2.1 §2.7, Table 6.5)",
+    .get = get_current,
+    .groups = kCurrentGroups,
+};
 
 InputVertex& append_current_vertex(Context* ctx) {
   return push_current_vertex(ctx);
@@ -95,7 +161,7 @@ namespace exec {
 void GLAPIENTRY Begin(GLenum mode) {
   Context* ctx = current_context();
   if (ctx == nullptr) return;
-  if (ctx->begin_mode != kOutsideBeginEnd) {
+  if (ctx->imm.mode != kOutsideBeginEnd) {
     record_error(ctx, GL_INVALID_OPERATION, "glBegin");
     return;
   }
@@ -103,26 +169,27 @@ void GLAPIENTRY Begin(GLenum mode) {
     record_error(ctx, GL_INVALID_ENUM, "glBegin", mode);
     return;
   }
-  ctx->begin_mode = mode;
-  ctx->imm.clear();
+  ctx->imm.mode = mode;
+  ctx->imm.verts.clear();
   // GL 2.1 §2.6.3: no command between Begin and End changes what the draw at End reads from
   // the texture coordinates, so the set of units it reads is fixed here.
-  ctx->imm_tex_units = input_tex_units(ctx);
+  ctx->imm.tex_units = input_tex_units(ctx);
 }
 
 void GLAPIENTRY End() {
   Context* ctx = current_context();
   if (ctx == nullptr) return;
-  if (ctx->begin_mode == kOutsideBeginEnd) {
+  if (ctx->imm.mode == kOutsideBeginEnd) {
     record_error(ctx, GL_INVALID_OPERATION, "glEnd");
     return;
   }
-  const GLenum mode = ctx->begin_mode;
-  ctx->begin_mode = kOutsideBeginEnd;
-  if (!ctx->imm.empty())
-    draw_vertices(ctx, mode, ctx->imm.data(), ctx->imm.size(), nullptr, ctx->imm.size());
-  ctx->imm.clear();
-  ctx->lighting.imm_changes.clear(); // Material calls of this primitive have been applied
+  const GLenum mode = ctx->imm.mode;
+  ctx->imm.mode = kOutsideBeginEnd;
+  if (!ctx->imm.verts.empty())
+    draw_vertices(ctx, mode, ctx->imm.verts.data(), ctx->imm.verts.size(), nullptr,
+                  ctx->imm.verts.size());
+  ctx->imm.verts.clear();
+  ctx->imm.material_changes.clear(); // Material calls of this primitive have been applied
 }
 
 // Each macro line spells out one family of GL 1.0 attribute commands; they differ only in
@@ -254,7 +321,7 @@ PINEDA_RECT(GLdouble, d)
 void GLAPIENTRY EdgeFlag(GLboolean flag) {
   Context* ctx = current_context();
   if (ctx == nullptr) return;
-  ctx->cur_edge = flag != GL_FALSE;
+  ctx->current.edge = flag != GL_FALSE;
 }
 
 void GLAPIENTRY EdgeFlagv(const GLboolean* flag) {

@@ -1,6 +1,6 @@
 // Blending state (GL 2.1 §4.1.8; BlendFuncSeparate, BlendColor and BlendEquation are core
 // since GL 1.4, BlendEquationSeparate since GL 2.0 and EXT_blend_equation_separate).
-#include "core/api_util.h"
+#include "state/api_util.h"
 #include "dispatch.h"
 
 namespace pineda {
@@ -51,8 +51,8 @@ void set_blend_func(const char* func, GLenum src_rgb, GLenum dst_rgb, GLenum src
   if (!valid_factor(dst_rgb, false)) return record_error(ctx, GL_INVALID_ENUM, func, dst_rgb);
   if (!valid_factor(src_a, true)) return record_error(ctx, GL_INVALID_ENUM, func, src_a);
   if (!valid_factor(dst_a, false)) return record_error(ctx, GL_INVALID_ENUM, func, dst_a);
-  ctx->blend_src_rgb = src_rgb, ctx->blend_dst_rgb = dst_rgb;
-  ctx->blend_src_a = src_a, ctx->blend_dst_a = dst_a;
+  ctx->color_buffer.blend_state.src_rgb = src_rgb, ctx->color_buffer.blend_state.dst_rgb = dst_rgb;
+  ctx->color_buffer.blend_state.src_a = src_a, ctx->color_buffer.blend_state.dst_a = dst_a;
   mark_dirty(ctx, kDirtyFragment);
 }
 
@@ -71,7 +71,7 @@ void GLAPIENTRY BlendFuncSeparate(GLenum src_rgb, GLenum dst_rgb, GLenum src_a, 
 void GLAPIENTRY BlendEquation(GLenum mode) {
   PINEDA_CTX_OUTSIDE("glBlendEquation");
   if (!valid_equation(mode)) return record_error(ctx, GL_INVALID_ENUM, "glBlendEquation", mode);
-  ctx->blend_eq_rgb = ctx->blend_eq_a = mode;
+  ctx->color_buffer.blend_state.eq_rgb = ctx->color_buffer.blend_state.eq_a = mode;
   mark_dirty(ctx, kDirtyFragment);
 }
 
@@ -82,18 +82,18 @@ void GLAPIENTRY BlendEquationSeparate(GLenum mode_rgb, GLenum mode_alpha) {
     return record_error(ctx, GL_INVALID_ENUM, "glBlendEquationSeparate", mode_rgb);
   if (!valid_equation(mode_alpha))
     return record_error(ctx, GL_INVALID_ENUM, "glBlendEquationSeparate", mode_alpha);
-  ctx->blend_eq_rgb = mode_rgb;
-  ctx->blend_eq_a = mode_alpha;
+  ctx->color_buffer.blend_state.eq_rgb = mode_rgb;
+  ctx->color_buffer.blend_state.eq_a = mode_alpha;
   mark_dirty(ctx, kDirtyFragment);
 }
 
 void GLAPIENTRY BlendColor(GLclampf r, GLclampf g, GLclampf b, GLclampf a) {
   PINEDA_CTX_OUTSIDE("glBlendColor");
   // GL 2.1 §4.1.8: the constant colour is clamped to [0,1] when specified.
-  ctx->blend_color[0] = clampf01(r);
-  ctx->blend_color[1] = clampf01(g);
-  ctx->blend_color[2] = clampf01(b);
-  ctx->blend_color[3] = clampf01(a);
+  ctx->color_buffer.blend_state.color[0] = clampf01(r);
+  ctx->color_buffer.blend_state.color[1] = clampf01(g);
+  ctx->color_buffer.blend_state.color[2] = clampf01(b);
+  ctx->color_buffer.blend_state.color[3] = clampf01(a);
   mark_dirty(ctx, kDirtyFragment);
 }
 

@@ -3,7 +3,7 @@
 #include <cstring>
 #include <new>
 
-#include "core/api_util.h"
+#include "state/api_util.h"
 #include "dispatch.h"
 
 namespace pineda {
@@ -13,9 +13,9 @@ namespace {
 GLuint* binding_for(Context* ctx, GLenum target) {
   switch (target) {
   case GL_ARRAY_BUFFER:
-    return &ctx->array_buffer;
+    return &ctx->arrays.array_buffer;
   case GL_ELEMENT_ARRAY_BUFFER:
-    return &ctx->element_array_buffer;
+    return &ctx->arrays.element_array_buffer;
   default:
     return nullptr;
   }
@@ -95,9 +95,9 @@ void GLAPIENTRY DeleteBuffers(GLsizei n, const GLuint* buffers) {
     const GLuint name = buffers[i];
     if (name == 0 || ctx->buffers.erase(name) == 0) continue;
     // GL 1.5 §2.9: bindings of a deleted buffer revert to zero, array bindings included.
-    if (ctx->array_buffer == name) ctx->array_buffer = 0;
-    if (ctx->element_array_buffer == name) ctx->element_array_buffer = 0;
-    VertexArrays& a = ctx->arrays;
+    if (ctx->arrays.array_buffer == name) ctx->arrays.array_buffer = 0;
+    if (ctx->arrays.element_array_buffer == name) ctx->arrays.element_array_buffer = 0;
+    VertexArrayGroup& a = ctx->arrays;
     for (ClientArray* arr : {&a.vertex, &a.color, &a.normal, &a.edgeflag, &a.texcoord[0],
                              &a.texcoord[1], &a.texcoord[2], &a.texcoord[3], &a.secondary, &a.fog})
       if (arr->buffer == name) arr->buffer = 0;

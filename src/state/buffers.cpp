@@ -3,15 +3,13 @@
 #include <algorithm>
 #include <cmath>
 
-#include "core/api_util.h"
+#include "state/api_util.h"
 #include "dispatch.h"
 #include "framebuffer/read_pixels.h"
+#include "raster/schedule.h"
+#include "state/pixel.h"
 
 namespace pineda {
-
-// draw_pixels.cpp: ReadPixels through the pixel transfer operations when they are active.
-bool read_pixels_transfer(Context* ctx, int x, int y, int w, int h, GLenum format, GLenum type,
-                          void* pixels);
 
 namespace {
 
@@ -21,14 +19,14 @@ void pixel_store(const char* func, GLenum pname, double value) {
   PixelStore* ps = nullptr;
   GLenum base = pname;
   if (pname >= GL_PACK_SWAP_BYTES && pname <= GL_PACK_ALIGNMENT) {
-    ps = &ctx->pack;
+    ps = &ctx->pixel_store.pack;
     base = pname - GL_PACK_SWAP_BYTES + GL_UNPACK_SWAP_BYTES;
   } else if (pname >= GL_UNPACK_SWAP_BYTES && pname <= GL_UNPACK_ALIGNMENT) {
-    ps = &ctx->unpack;
+    ps = &ctx->pixel_store.unpack;
   } else if (pname == GL_PACK_IMAGE_HEIGHT || pname == GL_PACK_SKIP_IMAGES) {
-    ps = &ctx->pack;
+    ps = &ctx->pixel_store.pack;
   } else if (pname == GL_UNPACK_IMAGE_HEIGHT || pname == GL_UNPACK_SKIP_IMAGES) {
-    ps = &ctx->unpack;
+    ps = &ctx->pixel_store.unpack;
   } else {
     record_error(ctx, GL_INVALID_ENUM, func, pname);
     return;
@@ -39,18 +37,29 @@ void pixel_store(const char* func, GLenum pname, double value) {
   const double v = std::isnan(value) ? -1.0 : std::clamp(value, -2147483648.0, 2147483647.0);
   const int iv = static_cast<int>(v < 0 ? -std::floor(-v + 0.5) : std::floor(v + 0.5));
   switch (base) {
-  case GL_UNPACK_SWAP_BYTES: ps->swap_bytes = value != 0.0; return;
-  case GL_UNPACK_LSB_FIRST: ps->lsb_first = value != 0.0; return;
-  default: break;
+  case GL_UNPACK_SWAP_BYTES:
+    ps->swap_bytes = value != 0.0;
+    return;
+  case GL_UNPACK_LSB_FIRST:
+    ps->lsb_first = value != 0.0;
+    return;
+  default:
+    break;
   }
   if (iv < 0) {
     record_error(ctx, GL_INVALID_VALUE, func);
     return;
   }
   switch (base) {
-  case GL_UNPACK_ROW_LENGTH: ps->row_length = iv; break;
-  case GL_UNPACK_SKIP_ROWS: ps->skip_rows = iv; break;
-  case GL_UNPACK_SKIP_PIXELS: ps->skip_pixels = iv; break;
+  case GL_UNPACK_ROW_LENGTH:
+    ps->row_length = iv;
+    break;
+  case GL_UNPACK_SKIP_ROWS:
+    ps->skip_rows = iv;
+    break;
+  case GL_UNPACK_SKIP_PIXELS:
+    ps->skip_pixels = iv;
+    break;
   case GL_UNPACK_ALIGNMENT:
     if (iv != 1 && iv != 2 && iv != 4 && iv != 8) {
       record_error(ctx, GL_INVALID_VALUE, func);
@@ -59,10 +68,15 @@ void pixel_store(const char* func, GLenum pname, double value) {
     ps->alignment = iv;
     break;
   case GL_PACK_IMAGE_HEIGHT:
-  case GL_UNPACK_IMAGE_HEIGHT: ps->image_height = iv; break;
+  case GL_UNPACK_IMAGE_HEIGHT:
+    ps->image_height = iv;
+    break;
   case GL_PACK_SKIP_IMAGES:
-  case GL_UNPACK_SKIP_IMAGES: ps->skip_images = iv; break;
-  default: break;
+  case GL_UNPACK_SKIP_IMAGES:
+    ps->skip_images = iv;
+    break;
+  default:
+    break;
   }
 }
 
@@ -83,46 +97,48 @@ void GLAPIENTRY Clear(GLbitfield mask) {
   if (mask & GL_ACCUM_BUFFER_BIT) accum_clear(ctx); // src/state/accum.cpp
   ClearState cs;
   for (int i = 0; i < 4; ++i) {
-    cs.color[i] = ctx->clear_color[i];
+    cs.color[i] = ctx->color_buffer.clear_color[i];
     // GL 2.1 §4.2.3: the colour buffers cleared are those enabled for writing (§4.2.1).
-    cs.color_write[i] = ctx->color_mask[i] && ctx->draw_buffer != GL_NONE;
+    cs.color_write[i] = ctx->color_buffer.color_mask[i] && ctx->color_buffer.draw_buffer != GL_NONE;
   }
-  cs.depth = ctx->clear_depth;
-  cs.depth_write = ctx->depth_mask;
-  cs.stencil = ctx->clear_stencil;
-  cs.stencil_writemask = ctx->stencil_writemask;
-  cs.scissor_test = ctx->scissor_test;
-  for (int i = 0; i < 4; ++i) cs.scissor[i] = ctx->scissor_box[i];
+  cs.depth = ctx->depth.clear;
+  cs.depth_write = ctx->depth.mask;
+  cs.stencil = ctx->stencil.clear;
+  cs.stencil_writemask = ctx->stencil.front.writemask;
+  cs.scissor_test = ctx->scissor.test;
+  for (int i = 0; i < 4; ++i)
+    cs.scissor[i] = ctx->scissor.box[i];
   // GL 2.1 §4.2.3: clearing a buffer that does not exist has no effect.
   GLbitfield m = mask & GL_COLOR_BUFFER_BIT;
   if (ctx->fb.depth != nullptr) m |= mask & GL_DEPTH_BUFFER_BIT;
   if (ctx->fb.stencil != nullptr) m |= mask & GL_STENCIL_BUFFER_BIT;
-  if (m != 0) clear_buffers(ctx->fb, cs, m, &ctx->workers);
+  if (m != 0) clear_buffers_shared(&ctx->workers, ctx->fb, cs, m);
   // GL 2.1 §4.2.3: with FRONT_AND_BACK both colour buffers are cleared.
   if ((m & GL_COLOR_BUFFER_BIT) && ctx->fb.color_also != nullptr) {
     Framebuffer second = ctx->fb;
     second.color = second.color_also;
-    clear_buffers(second, cs, GL_COLOR_BUFFER_BIT, &ctx->workers);
+    clear_buffers_shared(&ctx->workers, second, cs, GL_COLOR_BUFFER_BIT);
   }
 }
 
 void GLAPIENTRY ClearColor(GLclampf r, GLclampf g, GLclampf b, GLclampf a) {
   PINEDA_CTX_OUTSIDE("glClearColor");
-  ctx->clear_color[0] = clampf01(r);
-  ctx->clear_color[1] = clampf01(g);
-  ctx->clear_color[2] = clampf01(b);
-  ctx->clear_color[3] = clampf01(a);
+  ctx->color_buffer.clear_color[0] = clampf01(r);
+  ctx->color_buffer.clear_color[1] = clampf01(g);
+  ctx->color_buffer.clear_color[2] = clampf01(b);
+  ctx->color_buffer.clear_color[3] = clampf01(a);
 }
 
 void GLAPIENTRY ClearStencil(GLint s) {
   PINEDA_CTX_OUTSIDE("glClearStencil");
-  ctx->clear_stencil = s;
+  ctx->stencil.clear = s;
 }
 
 void GLAPIENTRY ColorMask(GLboolean r, GLboolean g, GLboolean b, GLboolean a) {
   PINEDA_CTX_OUTSIDE("glColorMask");
   const bool m[4] = {r != GL_FALSE, g != GL_FALSE, b != GL_FALSE, a != GL_FALSE};
-  for (int i = 0; i < 4; ++i) ctx->color_mask[i] = m[i];
+  for (int i = 0; i < 4; ++i)
+    ctx->color_buffer.color_mask[i] = m[i];
   mark_dirty(ctx, kDirtyFragment);
 }
 
@@ -150,7 +166,7 @@ void GLAPIENTRY ReadPixels(GLint x, GLint y, GLsizei w, GLsizei h, GLenum format
     return record_error(ctx, GL_INVALID_OPERATION, "glReadPixels");
   if (pixels == nullptr || w == 0 || h == 0 || ctx->fb.color == nullptr) return;
   if (read_pixels_transfer(ctx, x, y, w, h, format, type, pixels)) return;
-  read_pixels(read_view(ctx->fb), x, y, w, h, format, type, ctx->pack, pixels);
+  read_pixels(read_view(ctx->fb), x, y, w, h, format, type, ctx->pixel_store.pack, pixels);
 }
 
 } // namespace exec

@@ -6,9 +6,8 @@
 #include <cmath>
 #include <cstring>
 
-#include "core/api_util.h"
+#include "state/api_util.h"
 #include "dispatch.h"
-#include "state/misc_state.h"
 
 namespace pineda {
 
@@ -20,7 +19,7 @@ namespace {
 void set_index(float index) {
   Context* ctx = current_context();
   if (ctx == nullptr) return;
-  ctx->misc.current_index = index;
+  ctx->current.index = index;
 }
 
 void replay_index(const void* p) {
@@ -84,14 +83,14 @@ void GLAPIENTRY IndexPointer(GLenum type, GLsizei stride, const void* pointer) {
   a.type = type;
   a.stride = stride;
   a.pointer = pointer;
-  a.buffer = ctx->array_buffer;
+  a.buffer = ctx->arrays.array_buffer;
 }
 
 // §4.2.2: the low bits of the mask apply to index buffers, of which there are none; all 32
 // bits are kept for the query (Mesa llvmpipe returns them as given).
 void GLAPIENTRY IndexMask(GLuint mask) {
   PINEDA_CTX_OUTSIDE("glIndexMask");
-  ctx->misc.index_writemask = mask;
+  ctx->color_buffer.index_writemask = mask;
 }
 
 // §4.2.3: the index is converted to fixed point and its integer part masked to the index
@@ -107,7 +106,7 @@ void GLAPIENTRY ClearIndex(GLfloat c) {
     v = -2147483647 - 1;
   else if (t == t)
     v = int32_t(t);
-  ctx->misc.index_clear = v;
+  ctx->color_buffer.index_clear = v;
 }
 
 } // namespace exec

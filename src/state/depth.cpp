@@ -1,5 +1,5 @@
 // Depth buffer test and control (GL 2.1 §4.1.6, §4.2.2).
-#include "core/api_util.h"
+#include "state/api_util.h"
 #include "dispatch.h"
 
 namespace pineda {
@@ -11,22 +11,22 @@ void GLAPIENTRY DepthFunc(GLenum func) {
     record_error(ctx, GL_INVALID_ENUM, "glDepthFunc", func);
     return;
   }
-  if (ctx->depth_func == func) return;
-  ctx->depth_func = func;
+  if (ctx->depth.func == func) return;
+  ctx->depth.func = func;
   mark_dirty(ctx, kDirtyFragment);
 }
 
 void GLAPIENTRY DepthMask(GLboolean flag) {
   PINEDA_CTX_OUTSIDE("glDepthMask");
   const bool value = flag != GL_FALSE;
-  if (ctx->depth_mask == value) return;
-  ctx->depth_mask = value;
+  if (ctx->depth.mask == value) return;
+  ctx->depth.mask = value;
   mark_dirty(ctx, kDirtyFragment);
 }
 
 void GLAPIENTRY ClearDepth(GLdouble depth) {
   PINEDA_CTX_OUTSIDE("glClearDepth");
-  ctx->clear_depth = clampd01(depth);
+  ctx->depth.clear = clampd01(depth);
 }
 
 } // namespace exec

@@ -11,9 +11,10 @@
 #include <cstring>
 #include <utility>
 
-#include "core/api_util.h"
+#include "state/api_util.h"
 #include "dispatch.h"
-#include "geometry/geometry.h"
+#include "state/area.h"
+#include "state/draw_call.h"
 #include "state/dlist_internal.h"
 
 namespace pineda {
@@ -57,7 +58,8 @@ void apply_attribs(uint32_t mask, const ListAttribs& a) {
   if (mask & kListNormal) exec::Normal3fv(a.normal);
   if (mask & kListTex) exec::TexCoord4fv(a.tex[0]);
   for (int u = 1; u < kMaxTexUnits; ++u)
-    if (mask & list_tex_bit(u)) exec::MultiTexCoord4fv(GL_TEXTURE0 + static_cast<GLenum>(u), a.tex[u]);
+    if (mask & list_tex_bit(u))
+      exec::MultiTexCoord4fv(GL_TEXTURE0 + static_cast<GLenum>(u), a.tex[u]);
   if (mask & kListFog) exec::FogCoordf(a.fog);
   if (mask & kListEdge) exec::EdgeFlag(a.edge ? GL_TRUE : GL_FALSE);
 }
@@ -66,30 +68,42 @@ void attribs_of(const InputVertex& v, ListAttribs& a) {
   std::copy(v.color, v.color + 4, a.color);
   std::copy(v.color2, v.color2 + 3, a.color2);
   std::copy(v.normal, v.normal + 3, a.normal);
-  for (int u = 0; u < kMaxTexUnits; ++u) std::copy(v.tex[u], v.tex[u] + 4, a.tex[u]);
+  for (int u = 0; u < kMaxTexUnits; ++u)
+    std::copy(v.tex[u], v.tex[u] + 4, a.tex[u]);
   a.edge = v.edge != 0;
   a.fog = v.fog;
 }
 
 ListAttribs current_attribs(const Context* ctx) {
   ListAttribs a;
-  std::copy(ctx->cur_color, ctx->cur_color + 4, a.color);
-  std::copy(ctx->cur_color2, ctx->cur_color2 + 3, a.color2);
-  std::copy(ctx->cur_normal, ctx->cur_normal + 3, a.normal);
-  for (int u = 0; u < kMaxTexUnits; ++u) std::copy(ctx->cur_tex[u], ctx->cur_tex[u] + 4, a.tex[u]);
-  a.edge = ctx->cur_edge;
-  a.fog = ctx->texpipe.cur_fog_coord;
+  std::copy(ctx->current.color, ctx->current.color + 4, a.color);
+  std::copy(ctx->current.color2, ctx->current.color2 + 3, a.color2);
+  std::copy(ctx->current.normal, ctx->current.normal + 3, a.normal);
+  for (int u = 0; u < kMaxTexUnits; ++u)
+    std::copy(ctx->current.tex[u], ctx->current.tex[u] + 4, a.tex[u]);
+  a.edge = ctx->current.edge;
+  a.fog = ctx->current.fog_coord;
   return a;
 }
 
 // Attribute `bit` of `a` into vertex `v`.
 void set_vertex_attrib(InputVertex& v, uint32_t bit, const ListAttribs& a) {
   switch (bit) {
-  case kListColor: std::copy(a.color, a.color + 4, v.color); break;
-  case kListColor2: std::copy(a.color2, a.color2 + 3, v.color2); break;
-  case kListNormal: std::copy(a.normal, a.normal + 3, v.normal); break;
-  case kListEdge: v.edge = a.edge ? 1u : 0u; break;
-  case kListFog: v.fog = a.fog; break;
+  case kListColor:
+    std::copy(a.color, a.color + 4, v.color);
+    break;
+  case kListColor2:
+    std::copy(a.color2, a.color2 + 3, v.color2);
+    break;
+  case kListNormal:
+    std::copy(a.normal, a.normal + 3, v.normal);
+    break;
+  case kListEdge:
+    v.edge = a.edge ? 1u : 0u;
+    break;
+  case kListFog:
+    v.fog = a.fog;
+    break;
   default:
     for (int u = 0; u < kMaxTexUnits; ++u)
       if (bit == list_tex_bit(u)) std::copy(a.tex[u], a.tex[u] + 4, v.tex[u]);
@@ -119,7 +133,8 @@ void inherit_current(const Context* ctx, PrimBlock& b) {
   const ListAttribs cur = current_attribs(ctx);
   if (b.patched && same_attribs(cur, b.patched_values, b.inherit_mask)) return;
   for (int k = 0; k < kListAttribCount; ++k)
-    for (uint32_t i = 0; i < b.inherit_count[k]; ++i) set_vertex_attrib(b.verts[i], 1u << k, cur);
+    for (uint32_t i = 0; i < b.inherit_count[k]; ++i)
+      set_vertex_attrib(b.verts[i], 1u << k, cur);
   b.patched_values = cur;
   b.patched = true;
 }
@@ -163,16 +178,16 @@ void replay_block(const void* args) {
   if (ctx == nullptr) return;
   if (b->arrays) {
     // GL 2.1 §2.6.3: array draws are illegal between Begin and End.
-    if (ctx->begin_mode != kOutsideBeginEnd)
+    if (ctx->imm.mode != kOutsideBeginEnd)
       return record_error(ctx, GL_INVALID_OPERATION,
                           b->indices.empty() ? "glDrawArrays" : "glDrawElements");
     if (b->verts.empty()) return;
     return draw_block(ctx, *b);
   }
   // §2.6.3: Rect between Begin and End is INVALID_OPERATION and draws nothing.
-  if (b->rect && ctx->begin_mode != kOutsideBeginEnd)
+  if (b->rect && ctx->imm.mode != kOutsideBeginEnd)
     return record_error(ctx, GL_INVALID_OPERATION, "glRect");
-  if (ctx->begin_mode != kOutsideBeginEnd || !b->has_end) return replay_block_calls(*b);
+  if (ctx->imm.mode != kOutsideBeginEnd || !b->has_end) return replay_block_calls(*b);
   // What Begin, the vertices and End do (§2.6.1), without the calls.
   if (!b->verts.empty()) draw_block(ctx, *b);
   apply_attribs(b->final_mask, b->final_values);
@@ -334,7 +349,8 @@ void compile_vertex(Context* ctx, float x, float y, float z, float w) {
   }
   InputVertex& v = b->verts.emplace_back();
   v.pos[0] = x, v.pos[1] = y, v.pos[2] = z, v.pos[3] = w;
-  for (int k = 0; k < kListAttribCount; ++k) set_vertex_attrib(v, 1u << k, d.attribs);
+  for (int k = 0; k < kListAttribCount; ++k)
+    set_vertex_attrib(v, 1u << k, d.attribs);
   const auto n = static_cast<uint32_t>(b->verts.size());
   for (int k = 0; k < kListAttribCount; ++k) {
     if (!(d.known & (1u << k))) {
@@ -359,7 +375,7 @@ void compile_array_block(Context* ctx, GLenum mode, std::vector<InputVertex>&& v
                          std::vector<uint32_t>&& indices) {
   prepare_command(ctx);
   const DisplayListState& d = ctx->dlist;
-  const VertexArrays& arrays = ctx->arrays;
+  const VertexArrayGroup& arrays = ctx->arrays;
   auto b = std::make_unique<PrimBlock>();
   b->mode = mode;
   b->arrays = true;
@@ -379,7 +395,8 @@ void compile_array_block(Context* ctx, GLenum mode, std::vector<InputVertex>&& v
       b->inherit_mask |= 1u << k;
       continue;
     }
-    for (InputVertex& v : b->verts) set_vertex_attrib(v, 1u << k, d.attribs);
+    for (InputVertex& v : b->verts)
+      set_vertex_attrib(v, 1u << k, d.attribs);
   }
   PrimBlock* raw = b.get();
   append_record(ctx, &replay_block, &raw, sizeof raw);
@@ -456,24 +473,39 @@ void call_list(Context* ctx, GLuint name) {
   --d.depth;
 }
 
-bool query_display_list(const Context* ctx, GLenum pname, double* value) {
+namespace {
+
+// Table 6.31 (LIST_BASE, LIST_INDEX, LIST_MODE) and MAX_LIST_NESTING (Table 6.36).
+bool get_list(Context& ctx, GLenum pname, QueryValues& out) {
   switch (pname) {
   case GL_LIST_BASE:
-    *value = ctx->dlist.base;
+    out.ints({double(ctx.list.base)});
     return true;
   case GL_LIST_INDEX:
-    *value = ctx->dlist.index;
+    out.ints({double(ctx.dlist.index)});
     return true;
   case GL_LIST_MODE:
-    *value = ctx->dlist.mode;
+    out.ints({double(ctx.dlist.mode)});
     return true;
   case GL_MAX_LIST_NESTING:
-    *value = kMaxListNesting;
+    out.ints({kMaxListNesting});
     return true;
   default:
     return false;
   }
 }
+
+constexpr AttribGroup kListGroups[] = {
+    member_group<&Context::list>(GL_LIST_BIT, 0),
+};
+
+} // namespace
+
+const StateArea kListArea = {
+    .name = "display lists (GL 2.1 §5.4, Table 6.31)",
+    .get = get_list,
+    .groups = kListGroups,
+};
 
 namespace exec {
 
@@ -518,14 +550,14 @@ void GLAPIENTRY CallLists(GLsizei n, GLenum type, const void* lists) {
   if (!valid_call_lists_type(type)) return record_error(ctx, GL_INVALID_ENUM, "glCallLists", type);
   if (n < 0) return record_error(ctx, GL_INVALID_VALUE, "glCallLists");
   if (lists == nullptr) return;
-  const GLuint base = ctx->dlist.base;
+  const GLuint base = ctx->list.base;
   for (GLsizei i = 0; i < n; ++i)
     call_list(ctx, base + call_lists_offset(type, lists, static_cast<size_t>(i)));
 }
 
 void GLAPIENTRY ListBase(GLuint base) {
   PINEDA_CTX_OUTSIDE("glListBase");
-  ctx->dlist.base = base;
+  ctx->list.base = base;
 }
 
 GLuint GLAPIENTRY GenLists(GLsizei range) {

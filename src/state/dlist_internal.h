@@ -7,7 +7,7 @@
 #include <mutex>
 #include <vector>
 
-#include "core/context.h"
+#include "state/context.h"
 
 namespace pineda {
 

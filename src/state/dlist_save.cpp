@@ -8,10 +8,10 @@
 #include <utility>
 #include <vector>
 
-#include "core/api_util.h"
+#include "state/api_util.h"
 #include "core/normalize.h"
 #include "dispatch.h"
-#include "geometry/fetch.h"
+#include "state/fetch.h"
 #include "state/dlist_internal.h"
 
 namespace pineda {
@@ -118,12 +118,12 @@ bool arrays_mapped(Context* ctx, bool with_elements) {
     auto it = ctx->buffers.find(name);
     return it != ctx->buffers.end() && it->second->mapped;
   };
-  const VertexArrays& a = ctx->arrays;
+  const VertexArrayGroup& a = ctx->arrays;
   for (const ClientArray* array :
        {&a.vertex, &a.color, &a.normal, &a.texcoord[0], &a.texcoord[1], &a.texcoord[2],
         &a.texcoord[3], &a.edgeflag, &a.secondary, &a.fog})
     if (array->enabled && mapped(array->buffer)) return true;
-  return with_elements && mapped(ctx->element_array_buffer);
+  return with_elements && mapped(ctx->arrays.element_array_buffer);
 }
 
 // Elements [first, first + count) of the enabled arrays, compiled (§5.4: dereferenced now).
@@ -144,8 +144,8 @@ bool read_indices(Context* ctx, GLsizei count, GLenum type, const void* indices,
   const auto* src = static_cast<const uint8_t*>(indices);
   const size_t size = type == GL_UNSIGNED_BYTE ? 1 : type == GL_UNSIGNED_SHORT ? 2 : 4;
   const size_t bytes = static_cast<size_t>(count) * size;
-  if (ctx->element_array_buffer != 0) {
-    auto it = ctx->buffers.find(ctx->element_array_buffer);
+  if (ctx->arrays.element_array_buffer != 0) {
+    auto it = ctx->buffers.find(ctx->arrays.element_array_buffer);
     if (it == ctx->buffers.end()) return false;
     const size_t offset = reinterpret_cast<uintptr_t>(indices);
     const std::vector<uint8_t>& data = it->second->data;
@@ -319,7 +319,7 @@ void replay_call_lists(const void* p) {
   std::memcpy(&data, p, sizeof data);
   Context* ctx = current_context();
   if (ctx == nullptr) return;
-  const GLuint base = ctx->dlist.base;
+  const GLuint base = ctx->list.base;
   for (GLuint offset : data->offsets)
     call_list(ctx, base + offset);
 }
@@ -553,7 +553,7 @@ void GLAPIENTRY ArrayElement(GLint i) {
     if (i < 0) {
       record_error_at_execution(ctx, GL_INVALID_VALUE, "glArrayElement");
     } else if (fetch_range(ctx, static_cast<size_t>(i), 1, &v)) {
-      const VertexArrays& a = ctx->arrays;
+      const VertexArrayGroup& a = ctx->arrays;
       if (a.color.enabled) compile_attrib(ctx, kListColor, v.color);
       if (a.secondary.enabled) compile_attrib(ctx, kListColor2, v.color2);
       if (a.normal.enabled) compile_attrib(ctx, kListNormal, v.normal);

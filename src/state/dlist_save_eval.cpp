@@ -8,10 +8,10 @@
 #include <type_traits>
 #include <vector>
 
-#include "core/api_util.h"
+#include "state/api_util.h"
 #include "dispatch.h"
 #include "state/dlist_internal.h"
-#include "state/eval_state.h"
+#include "state/eval.h"
 
 namespace pineda {
 

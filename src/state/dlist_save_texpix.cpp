@@ -15,11 +15,11 @@
 #include <new>
 #include <vector>
 
-#include "core/api_util.h"
+#include "state/api_util.h"
 #include "dispatch.h"
 #include "pixel/unpack.h"
 #include "state/dlist_internal.h"
-#include "texture/texture_internal.h"
+#include "state/texture_internal.h"
 
 namespace pineda {
 
@@ -164,10 +164,10 @@ template <ImageCall Call> void replay_image(const void* p) {
   std::memcpy(&h, p, sizeof h);
   Context* ctx = current_context();
   if (ctx == nullptr) return;
-  const PixelStore saved = ctx->unpack;
-  ctx->unpack = h.unpack;
+  const PixelStore saved = ctx->pixel_store.unpack;
+  ctx->pixel_store.unpack = h.unpack;
   Call(h, h.bytes != 0 ? static_cast<const char*>(p) + sizeof h : nullptr);
-  ctx->unpack = saved;
+  ctx->pixel_store.unpack = saved;
 }
 
 // Compiles an image command whose client image spans client_image_bytes(w, h, d, format,
@@ -177,7 +177,7 @@ template <ImageCall Call> bool save_image(ImageHeader h, const void* pixels, boo
   if (ctx == nullptr) return true;
   // IMAGE_HEIGHT and SKIP_IMAGES apply to 3D images only (§3.8.1): a 1D or 2D image spans
   // no more than its rows.
-  h.unpack = three_d ? ctx->unpack : store_2d(ctx->unpack);
+  h.unpack = three_d ? ctx->pixel_store.unpack : store_2d(ctx->pixel_store.unpack);
   h.bytes = pixels == nullptr ? 0 : client_image_bytes(h.w, h.h, h.d, h.format, h.type, h.unpack);
   try {
     return record_with_data(&replay_image<Call>, &h, sizeof h, pixels, h.bytes);

@@ -1,5 +1,6 @@
-// Display-list state (GL 2.1 §5.4, Table 6.31 LIST_BASE, LIST_INDEX, LIST_MODE): the lists of
-// a share group and the per-context compilation and execution state. The command stream and
+// Display-list state (GL 2.1 §5.4, Table 6.31 LIST_BASE, LIST_INDEX, LIST_MODE; the "list"
+// attribute group): the lists of a share group and the per-context compilation and execution
+// state. The command stream and
 // the compiled vertex blocks are built and replayed by src/state/dlist.cpp and
 // src/state/dlist_save.cpp.
 #pragma once
@@ -10,11 +11,9 @@
 #include <map>
 #include <memory>
 #include <vector>
+#include "core/limits.h"
 
 namespace pineda {
-
-// MAX_LIST_NESTING (Table 6.37): GL 2.1 §5.4 requires at least 64.
-constexpr int kMaxListNesting = 64;
 
 // Data a list owns besides its command stream (compiled vertex blocks, CallLists offsets);
 // the stream refers to it by address.
@@ -60,8 +59,13 @@ struct ListAttribs {
   float fog;
 };
 
+// LIST_BIT: Table 6.31.
+struct ListGroup {
+  GLuint base = 0; // LIST_BASE (ListBase)
+};
+
+// The lists being compiled and executed: no attribute group.
 struct DisplayListState {
-  GLuint base = 0;  // LIST_BASE (ListBase)
   GLuint index = 0; // LIST_INDEX: the list being compiled, 0 when none
   GLenum mode = 0;  // LIST_MODE: COMPILE or COMPILE_AND_EXECUTE while compiling, else 0
   int depth = 0;    // lists being executed now, nested (CallList inside lists)
@@ -76,10 +80,7 @@ struct DisplayListState {
   std::unique_ptr<DlistObject> block;
 };
 
-struct Context;
-
-// LIST_BASE, LIST_INDEX, LIST_MODE and MAX_LIST_NESTING for glGet (dlist.cpp); false for
-// other names.
-bool query_display_list(const Context* ctx, GLenum pname, double* value);
+struct StateArea;
+extern const StateArea kListArea; // dlist.cpp
 
 } // namespace pineda

@@ -5,12 +5,14 @@
 #include <cstdint>
 #include <vector>
 
-#include "core/api_util.h"
+#include "state/api_util.h"
 #include "dispatch.h"
 #include "framebuffer/read_pixels.h"
-#include "geometry/geometry.h"
+#include "state/draw_call.h"
+#include "state/validate.h"
 #include "pixel/pixel_draw.h"
 #include "pixel/unpack.h"
+#include "draw/draw_buffers.h"
 #include "state/draw_read_buffer.h"
 #include "state/select.h"
 
@@ -34,11 +36,34 @@ PixelPlacement placement_at(const Context* ctx, int w, int h) {
   PixelPlacement p;
   p.w = w;
   p.h = h;
-  p.x = round_raster(ctx->raster_pos.win[0]);
-  p.y = round_raster(ctx->raster_pos.win[1]);
-  p.zoom_x = ctx->pixel_transfer.zoom_x;
-  p.zoom_y = ctx->pixel_transfer.zoom_y;
+  p.x = round_raster(ctx->current.raster_pos.win[0]);
+  p.y = round_raster(ctx->current.raster_pos.win[1]);
+  p.zoom_x = ctx->pixel.zoom_x;
+  p.zoom_y = ctx->pixel.zoom_y;
   return p;
+}
+
+// The window pixels the groups of `p` can reach (§3.6.4): for FRONT_AND_BACK, whose first pass
+// keeps their depth and stencil values (draw/draw_buffers.h). A pixel more on each side.
+DrawRegion placement_region(const PixelPlacement& p) {
+  const double x0 = p.x + double(p.zoom_x) * double(p.col0);
+  const double x1 = p.x + double(p.zoom_x) * double(p.col0 + p.w);
+  const double y0 = p.y + double(p.zoom_y) * double(p.row0);
+  const double y1 = p.y + double(p.zoom_y) * double(p.row0 + p.h);
+  if (!std::isfinite(x0) || !std::isfinite(x1) || !std::isfinite(y0) || !std::isfinite(y1))
+    return {INT32_MIN, INT32_MIN, INT32_MAX, INT32_MAX};
+  const auto to_int = [](double v) { return static_cast<int>(std::clamp(v, -1e9, 1e9)); };
+  return {to_int(std::floor(std::min(x0, x1)) - 1), to_int(std::floor(std::min(y0, y1)) - 1),
+          to_int(std::ceil(std::max(x0, x1)) + 1), to_int(std::ceil(std::max(y0, y1)) + 1)};
+}
+
+// Runs draw() (which returns the samples that passed) once per draw buffer (GL 2.1 §4.2.1);
+// occlusion queries count the primary pass.
+template <typename Draw> void each_draw_buffer(Context* ctx, const DrawRegion& region, Draw draw) {
+  for_each_draw_buffer(ctx->fb, ctx->raster, region, [&](bool primary) {
+    const uint64_t samples = draw();
+    if (primary) ctx->queries.samples_passed += samples;
+  });
 }
 
 // Draws `h` rows of `w` groups in strips of rows; unpack(rows, row_count, out) fills one strip
@@ -63,20 +88,20 @@ void draw_color_strip(Context* ctx, const PixelPlacement& p, const float* rgba) 
   PixelRect r;
   r.place = p;
   r.rgba = rgba;
-  r.z = ctx->raster_pos.win[2];
-  r.raster = &ctx->raster_pos;
-  for_each_draw_buffer(
-      ctx, [&] { ctx->queries.samples_passed += draw_pixel_rect(ctx->raster, ctx->fb, r); });
+  r.z = ctx->current.raster_pos.win[2];
+  r.raster = &ctx->current.raster_pos;
+  each_draw_buffer(ctx, placement_region(p),
+                   [&] { return draw_pixel_rect(ctx->raster, ctx->fb, r); });
 }
 
 void draw_depth_strip(Context* ctx, const PixelPlacement& p, const float* depth) {
   PixelRect r;
   r.place = p;
   r.depth = depth;
-  std::copy(ctx->raster_pos.color, ctx->raster_pos.color + 4, r.color);
-  r.raster = &ctx->raster_pos;
-  for_each_draw_buffer(
-      ctx, [&] { ctx->queries.samples_passed += draw_pixel_rect(ctx->raster, ctx->fb, r); });
+  std::copy(ctx->current.raster_pos.color, ctx->current.raster_pos.color + 4, r.color);
+  r.raster = &ctx->current.raster_pos;
+  each_draw_buffer(ctx, placement_region(p),
+                   [&] { return draw_pixel_rect(ctx->raster, ctx->fb, r); });
 }
 
 // The part of the w x h rectangle at (x, y) inside the framebuffer.
@@ -101,7 +126,7 @@ PixelStore tight_store() {
 // SELECT and FEEDBACK render modes: a pixel rectangle or bitmap at a valid raster position
 // becomes `token` and that position in the feedback buffer (§5.3), and nothing else.
 void raster_token(Context* ctx, GLenum token) {
-  const RasterPos& rp = ctx->raster_pos;
+  const RasterPos& rp = ctx->current.raster_pos;
   if (rp.valid) feedback_raster_token(ctx, token, rp.win, rp.color, rp.tex[0]);
 }
 
@@ -112,7 +137,7 @@ void raster_token(Context* ctx, GLenum token) {
 // direct path (read_pixels) gives the same result. The caller has checked the arguments.
 bool read_pixels_transfer(Context* ctx, int x, int y, int w, int h, GLenum format, GLenum type,
                           void* pixels) {
-  const PixelTransfer& xfer = ctx->pixel_transfer;
+  const PixelTransferView xfer = pixel_transfer_view(ctx);
   const bool depth = format == GL_DEPTH_COMPONENT, stencil = format == GL_STENCIL_INDEX;
   if (depth     ? !depth_transfer_active(xfer)
       : stencil ? !stencil_transfer_active(xfer)
@@ -123,7 +148,7 @@ bool read_pixels_transfer(Context* ctx, int x, int y, int w, int h, GLenum forma
   const int iw = in.x1 - in.x0, ih = in.y1 - in.y0;
   // Pack only the groups inside the framebuffer: same rows as the full image, skipping the
   // groups before them (pixels outside the window are undefined, §4.3.2, and left untouched).
-  PixelStore st = store_2d(ctx->pack);
+  PixelStore st = store_2d(ctx->pixel_store.pack);
   if (st.row_length == 0) st.row_length = w;
   const int64_t skip_pixels = int64_t{st.skip_pixels} + in.x0 - x;
   const int64_t skip_rows = int64_t{st.skip_rows} + in.y0 - y;
@@ -168,12 +193,12 @@ void GLAPIENTRY DrawPixels(GLsizei width, GLsizei height, GLenum format, GLenum 
   // feedback mode no fragments are made (§5.2).
   if (!render_mode_is_render(ctx)) return raster_token(ctx, GL_DRAW_PIXEL_TOKEN);
   // §3.6.4: with an invalid raster position DrawPixels is ignored.
-  if (!ctx->raster_pos.valid || width == 0 || height == 0 || pixels == nullptr ||
+  if (!ctx->current.raster_pos.valid || width == 0 || height == 0 || pixels == nullptr ||
       ctx->fb.color == nullptr)
     return;
   validate_state(ctx);
-  const PixelStore st = store_2d(ctx->unpack);
-  const PixelTransfer& xfer = ctx->pixel_transfer;
+  const PixelStore st = store_2d(ctx->pixel_store.unpack);
+  const PixelTransferView xfer = pixel_transfer_view(ctx);
   const PixelPlacement p = placement_at(ctx, width, height);
   // Each strip unpacks `rows` rows starting at row `m` of the client image.
   const auto strip_store = [&](int m) {
@@ -212,7 +237,7 @@ void GLAPIENTRY Bitmap(GLsizei width, GLsizei height, GLfloat xorig, GLfloat yor
                        GLfloat ymove, const GLubyte* bitmap) {
   PINEDA_CTX_OUTSIDE("glBitmap");
   if (width < 0 || height < 0) return record_error(ctx, GL_INVALID_VALUE, "glBitmap");
-  RasterPos& rp = ctx->raster_pos;
+  RasterPos& rp = ctx->current.raster_pos;
   // §3.7: with an invalid raster position the bitmap is ignored, the position not moved.
   if (!rp.valid) return;
   if (!render_mode_is_render(ctx)) {
@@ -222,8 +247,11 @@ void GLAPIENTRY Bitmap(GLsizei width, GLsizei height, GLfloat xorig, GLfloat yor
     // Unpacked like DrawPixels of COLOR_INDEX / BITMAP, before any conversion (§3.7).
     const size_t n = static_cast<size_t>(width) * static_cast<size_t>(height);
     std::vector<uint32_t> idx(n);
-    unpack_index(bitmap, width, height, 1, GL_COLOR_INDEX, GL_BITMAP, store_2d(ctx->unpack),
-                 PixelTransfer{}, idx.data());
+    static const PixelTransfer kNoTransfer;
+    static const PixelMaps kNoMaps;
+    unpack_index(bitmap, width, height, 1, GL_COLOR_INDEX, GL_BITMAP,
+                 store_2d(ctx->pixel_store.unpack), PixelTransferView{kNoTransfer, kNoMaps},
+                 idx.data());
     std::vector<uint8_t> bits(n);
     for (size_t i = 0; i < n; ++i)
       bits[i] = static_cast<uint8_t>(idx[i] & 1u);
@@ -240,14 +268,19 @@ void GLAPIENTRY Bitmap(GLsizei width, GLsizei height, GLfloat xorig, GLfloat yor
     // secondary colour to bitmap fragments. llvmpipe does so for bitmaps, not for DrawPixels.
     // With texturing or fog on, draw_bitmap adds it after texturing instead.
     float color[4] = {rp.color[0], rp.color[1], rp.color[2], rp.color[3]};
-    if ((ctx->lighting.enabled || ctx->lighting.color_sum) && ctx->raster.shade == nullptr)
+    if ((ctx->lighting.enabled || ctx->fog.color_sum) && ctx->raster.shade == nullptr)
       for (int c = 0; c < 3; ++c)
         color[c] += rp.color2[c];
     // Occlusion queries count bitmap fragments too (GL 2.1 §4.1.7).
-    for_each_draw_buffer(ctx, [&] {
-      ctx->queries.samples_passed += draw_bitmap(
-          ctx->raster, ctx->fb, corner(rp.win[0] - xorig + kEps), corner(rp.win[1] - yorig + kEps),
-          width, height, bits.data(), color, rp.win[2], rp);
+    const int x = corner(rp.win[0] - xorig + kEps), y = corner(rp.win[1] - yorig + kEps);
+    const DrawRegion region{
+        static_cast<int>(std::max<int64_t>(int64_t{x} - 1, INT32_MIN)),
+        static_cast<int>(std::max<int64_t>(int64_t{y} - 1, INT32_MIN)),
+        static_cast<int>(std::min<int64_t>(int64_t{x} + width + 1, INT32_MAX)),
+        static_cast<int>(std::min<int64_t>(int64_t{y} + height + 1, INT32_MAX))};
+    each_draw_buffer(ctx, region, [&] {
+      return draw_bitmap(ctx->raster, ctx->fb, x, y, width, height, bits.data(), color, rp.win[2],
+                         rp);
     });
   }
   rp.win[0] += xmove;
@@ -263,7 +296,7 @@ void GLAPIENTRY CopyPixels(GLint x, GLint y, GLsizei width, GLsizei height, GLen
       (type == GL_STENCIL && ctx->fb.stencil == nullptr))
     return record_error(ctx, GL_INVALID_OPERATION, "glCopyPixels");
   if (!render_mode_is_render(ctx)) return raster_token(ctx, GL_COPY_PIXEL_TOKEN); // §5.3
-  if (!ctx->raster_pos.valid || ctx->fb.color == nullptr) return;
+  if (!ctx->current.raster_pos.valid || ctx->fb.color == nullptr) return;
   // Source pixels outside the window are undefined (§4.3.2); Pineda makes no fragments for
   // them, so only the part inside is read and drawn, at its place in the full rectangle.
   const Inside in = inside_fb(ctx->fb, x, y, width, height);
@@ -277,7 +310,7 @@ void GLAPIENTRY CopyPixels(GLint x, GLint y, GLsizei width, GLsizei height, GLen
   // old contents (§4.3.3: as if ReadPixels, then DrawPixels).
   const size_t n = static_cast<size_t>(iw) * static_cast<size_t>(ih);
   const PixelStore tight = tight_store();
-  const PixelTransfer& xfer = ctx->pixel_transfer;
+  const PixelTransferView xfer = pixel_transfer_view(ctx);
   if (type == GL_STENCIL) {
     std::vector<uint32_t> s(n);
     read_pixels(ctx->fb, in.x0, in.y0, iw, ih, GL_STENCIL_INDEX, GL_UNSIGNED_INT, tight, s.data());

@@ -1,6 +1,6 @@
 // Evaluators (GL 2.1 §5.1): glMap1/2, glGetMap, glMapGrid1/2, glEvalCoord1/2, glEvalPoint1/2,
-// glEvalMesh1/2, and the hooks through which enable.cpp, get.cpp and attrib.cpp reach the
-// evaluator state (the MAP1_*/MAP2_* and AUTO_NORMAL enables, the grid queries, EVAL_BIT).
+// glEvalMesh1/2, and the evaluator area (Table 6.28, eval.h): the MAP1_*/MAP2_* and
+// AUTO_NORMAL enables, the grid queries and EVAL_BIT.
 //
 // Maps are Bézier polynomials in Bernstein form, evaluated in double precision. An evaluation
 // emits the vertex with its evaluated attributes straight into the primitive being assembled:
@@ -13,10 +13,11 @@
 #include <memory>
 #include <type_traits>
 
-#include "core/api_util.h"
+#include "state/api_util.h"
 #include "dispatch.h"
-#include "geometry/geometry.h"
-#include "state/eval_state.h"
+#include "state/area.h"
+#include "state/draw_call.h"
+#include "state/eval.h"
 
 namespace pineda {
 
@@ -132,9 +133,9 @@ int vertex_kind(const bool* enabled) {
 // texture coordinate commands do not change current state). A Vertex outside Begin/End has no
 // effect (§2.7).
 void eval_coord1(Context* ctx, double u) {
-  const EvalState& e = ctx->eval;
+  const EvalGroup& e = ctx->eval;
   const int vk = vertex_kind(e.map1_enabled);
-  if (vk < 0 || ctx->begin_mode == kOutsideBeginEnd) return;
+  if (vk < 0 || ctx->imm.mode == kOutsideBeginEnd) return;
   InputVertex& v = append_current_vertex(ctx);
   if (e.map1_enabled[kEvalColor4]) eval_map1(e.map1[kEvalColor4], 4, u, v.color);
   if (e.map1_enabled[kEvalNormal]) eval_map1(e.map1[kEvalNormal], 3, u, v.normal);
@@ -157,9 +158,9 @@ void to_float(const double* d, float* f, int k) {
 // (x/w, y/w, z/w) (VERTEX_4); it takes precedence over a normal map. The derivatives are
 // taken with respect to the map's normalized coordinates, as Mesa does.
 void eval_coord2(Context* ctx, double u, double w) {
-  const EvalState& e = ctx->eval;
+  const EvalGroup& e = ctx->eval;
   const int vk = vertex_kind(e.map2_enabled);
-  if (vk < 0 || ctx->begin_mode == kOutsideBeginEnd) return;
+  if (vk < 0 || ctx->imm.mode == kOutsideBeginEnd) return;
   InputVertex& v = append_current_vertex(ctx);
   double val[4];
   if (e.map2_enabled[kEvalColor4]) {
@@ -221,7 +222,7 @@ void map1(const char* func, GLenum target, T u1, T u2, GLint stride, GLint order
   if (kind < 0) return record_error(ctx, GL_INVALID_ENUM, func, target);
   const int k = kComponents[kind];
   if (stride < k) return record_error(ctx, GL_INVALID_VALUE, func);
-  if (ctx->active_texture != 0) return record_error(ctx, GL_INVALID_OPERATION, func);
+  if (ctx->texture.active != 0) return record_error(ctx, GL_INVALID_OPERATION, func);
   EvalMap1& m = ctx->eval.map1[kind];
   m.order = order;
   m.u1 = static_cast<float>(u1);
@@ -244,7 +245,7 @@ void map2(const char* func, GLenum target, T u1, T u2, GLint ustride, GLint uord
   if (kind < 0) return record_error(ctx, GL_INVALID_ENUM, func, target);
   const int k = kComponents[kind];
   if (ustride < k || vstride < k) return record_error(ctx, GL_INVALID_VALUE, func);
-  if (ctx->active_texture != 0) return record_error(ctx, GL_INVALID_OPERATION, func);
+  if (ctx->texture.active != 0) return record_error(ctx, GL_INVALID_OPERATION, func);
   EvalMap2& m = ctx->eval.map2[kind];
   m.uorder = uorder;
   m.vorder = vorder;
@@ -279,7 +280,7 @@ template <typename T> void get_map(const char* func, GLenum target, GLenum query
     else
       out[i] = static_cast<T>(x);
   };
-  const EvalState& e = ctx->eval;
+  const EvalGroup& e = ctx->eval;
   if (dim == 1) {
     const EvalMap1& m = e.map1[kind];
     if (query == GL_COEFF)
@@ -307,7 +308,7 @@ template <typename T> void get_map(const char* func, GLenum target, GLenum query
 void map_grid1(const char* func, GLint n, double u1, double u2) {
   PINEDA_CTX_OUTSIDE(func);
   if (n <= 0) return record_error(ctx, GL_INVALID_VALUE, func);
-  EvalState& e = ctx->eval;
+  EvalGroup& e = ctx->eval;
   e.grid1_n = n;
   e.grid1_u1 = static_cast<float>(u1);
   e.grid1_u2 = static_cast<float>(u2);
@@ -316,7 +317,7 @@ void map_grid1(const char* func, GLint n, double u1, double u2) {
 void map_grid2(const char* func, GLint un, double u1, double u2, GLint vn, double v1, double v2) {
   PINEDA_CTX_OUTSIDE(func);
   if (un <= 0 || vn <= 0) return record_error(ctx, GL_INVALID_VALUE, func);
-  EvalState& e = ctx->eval;
+  EvalGroup& e = ctx->eval;
   e.grid2_un = un;
   e.grid2_u1 = static_cast<float>(u1);
   e.grid2_u2 = static_cast<float>(u2);
@@ -327,7 +328,7 @@ void map_grid2(const char* func, GLint un, double u1, double u2, GLint vn, doubl
 
 } // namespace
 
-EvalState::EvalState() {
+EvalGroup::EvalGroup() {
   for (int kind = 0; kind < kEvalKindCount; ++kind) {
     map1[kind].points.resize(size_t(kComponents[kind]));
     initial_point(kind, map1[kind].points.data());
@@ -336,67 +337,55 @@ EvalState::EvalState() {
   }
 }
 
-// ---- hooks for enable.cpp, get.cpp and attrib.cpp --------------------------------------------
+namespace {
 
-// The flag behind MAP1_*, MAP2_* or AUTO_NORMAL, or nullptr. No derived state depends on it.
-bool* eval_capability(Context* ctx, GLenum cap) {
-  if (cap == GL_AUTO_NORMAL) return &ctx->eval.auto_normal;
-  if (const int kind = map_kind(cap, 1); kind >= 0) return &ctx->eval.map1_enabled[kind];
-  if (const int kind = map_kind(cap, 2); kind >= 0) return &ctx->eval.map2_enabled[kind];
-  return nullptr;
-}
-
-// glGet of MAX_EVAL_ORDER and the grids (Table 6.28, 6.34): the number of values written to v
-// (0: not an evaluator query) and their kind as get.cpp's Kind index.
-int eval_query(const Context* ctx, GLenum pname, double* v, int* kind) {
-  enum { kInt, kBool, kFloat }; // get.cpp's Kind, in order
-  const EvalState& e = ctx->eval;
+// MAX_EVAL_ORDER and the grids (Tables 6.28, 6.36).
+bool get_eval(Context& ctx, GLenum pname, QueryValues& out) {
+  const EvalGroup& e = ctx.eval;
   switch (pname) {
   case GL_MAX_EVAL_ORDER:
-    *kind = kInt, v[0] = kMaxEvalOrder;
-    return 1;
+    out.ints({kMaxEvalOrder});
+    return true;
   case GL_MAP1_GRID_DOMAIN:
-    *kind = kFloat, v[0] = e.grid1_u1, v[1] = e.grid1_u2;
-    return 2;
+    out.floats({e.grid1_u1, e.grid1_u2});
+    return true;
   case GL_MAP1_GRID_SEGMENTS:
-    *kind = kInt, v[0] = e.grid1_n;
-    return 1;
+    out.ints({double(e.grid1_n)});
+    return true;
   case GL_MAP2_GRID_DOMAIN:
-    *kind = kFloat;
-    v[0] = e.grid2_u1, v[1] = e.grid2_u2, v[2] = e.grid2_v1, v[3] = e.grid2_v2;
-    return 4;
+    out.floats({e.grid2_u1, e.grid2_u2, e.grid2_v1, e.grid2_v2});
+    return true;
   case GL_MAP2_GRID_SEGMENTS:
-    *kind = kInt, v[0] = e.grid2_un, v[1] = e.grid2_vn;
-    return 2;
+    out.ints({double(e.grid2_un), double(e.grid2_vn)});
+    return true;
   default:
-    return 0;
+    return false;
   }
 }
 
-// §6.1.14: the enables belong to both ENABLE_BIT and EVAL_BIT; EVAL_BIT also saves the maps
-// and the grids.
-void eval_save_attrib(const Context* c, GLbitfield mask, EvalAttrib& f) {
-  if (!(mask & (GL_ENABLE_BIT | GL_EVAL_BIT))) return;
-  const EvalState& e = c->eval;
-  for (int k = 0; k < kEvalKindCount; ++k) {
-    f.map1_enabled[k] = e.map1_enabled[k];
-    f.map2_enabled[k] = e.map2_enabled[k];
-  }
-  f.auto_normal = e.auto_normal;
-  if (mask & GL_EVAL_BIT) f.state = std::make_shared<const EvalState>(e);
-}
+// MAP1_COLOR_4 .. MAP1_VERTEX_4 and MAP2_COLOR_4 .. MAP2_VERTEX_4 are consecutive enums in
+// EvalKind order. No derived state depends on them.
+constexpr Capability kEvalCaps[] = {
+    {GL_MAP1_COLOR_4, kEvalKindCount, CapabilityKind::kServer, 0,
+     [](Context& c, unsigned i, unsigned) { return &c.eval.map1_enabled[i]; }},
+    {GL_MAP2_COLOR_4, kEvalKindCount, CapabilityKind::kServer, 0,
+     [](Context& c, unsigned i, unsigned) { return &c.eval.map2_enabled[i]; }},
+    {GL_AUTO_NORMAL, 1, CapabilityKind::kServer, 0,
+     [](Context& c, unsigned, unsigned) { return &c.eval.auto_normal; }},
+};
 
-void eval_restore_attrib(Context* c, GLbitfield mask, const EvalAttrib& f) {
-  EvalState& e = c->eval;
-  if ((mask & GL_EVAL_BIT) && f.state) e = *f.state;
-  if (mask & (GL_ENABLE_BIT | GL_EVAL_BIT)) {
-    for (int k = 0; k < kEvalKindCount; ++k) {
-      e.map1_enabled[k] = f.map1_enabled[k];
-      e.map2_enabled[k] = f.map2_enabled[k];
-    }
-    e.auto_normal = f.auto_normal;
-  }
-}
+constexpr AttribGroup kEvalGroups[] = {
+    member_group<&Context::eval>(GL_EVAL_BIT, 0),
+};
+
+} // namespace
+
+const StateArea kEvalArea = {
+    .name = "evaluators (GL 2.1 §5.1, Table 6.28)",
+    .capabilities = kEvalCaps,
+    .get = get_eval,
+    .groups = kEvalGroups,
+};
 
 namespace exec {
 
@@ -470,14 +459,14 @@ void GLAPIENTRY EvalCoord2dv(const GLdouble* u) {
 void GLAPIENTRY EvalPoint1(GLint i) {
   Context* ctx = current_context();
   if (ctx == nullptr) return;
-  const EvalState& e = ctx->eval;
+  const EvalGroup& e = ctx->eval;
   eval_coord1(ctx, grid_coord(i, e.grid1_n, e.grid1_u1, e.grid1_u2));
 }
 
 void GLAPIENTRY EvalPoint2(GLint i, GLint j) {
   Context* ctx = current_context();
   if (ctx == nullptr) return;
-  const EvalState& e = ctx->eval;
+  const EvalGroup& e = ctx->eval;
   eval_coord2(ctx, grid_coord(i, e.grid2_un, e.grid2_u1, e.grid2_u2),
               grid_coord(j, e.grid2_vn, e.grid2_v1, e.grid2_v2));
 }
@@ -497,7 +486,7 @@ void GLAPIENTRY EvalMesh1(GLenum mode, GLint i1, GLint i2) {
   default:
     return record_error(ctx, GL_INVALID_ENUM, "glEvalMesh1", mode);
   }
-  const EvalState& e = ctx->eval;
+  const EvalGroup& e = ctx->eval;
   if (vertex_kind(e.map1_enabled) < 0) return;
   Begin(prim);
   // A 64-bit counter, so that i2 == INT_MAX terminates.
@@ -512,7 +501,7 @@ void GLAPIENTRY EvalMesh2(GLenum mode, GLint i1, GLint i2, GLint j1, GLint j2) {
   PINEDA_CTX_OUTSIDE("glEvalMesh2");
   if (mode != GL_POINT && mode != GL_LINE && mode != GL_FILL)
     return record_error(ctx, GL_INVALID_ENUM, "glEvalMesh2", mode);
-  const EvalState& e = ctx->eval;
+  const EvalGroup& e = ctx->eval;
   if (vertex_kind(e.map2_enabled) < 0 || i1 > i2 || j1 > j2) return;
   auto u = [&](GLint i) { return grid_coord(i, e.grid2_un, e.grid2_u1, e.grid2_u2); };
   auto v = [&](GLint j) { return grid_coord(j, e.grid2_vn, e.grid2_v1, e.grid2_v2); };

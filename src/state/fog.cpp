@@ -1,7 +1,9 @@
 // Fog parameters (GL 2.1 §3.10, glFog) and the current fog coordinate (GL 1.4 §2.7,
-// glFogCoord).
-#include "core/api_util.h"
+// glFogCoord); the fog area (Table 6.11, fog.h): FOG and COLOR_SUM, the fog queries and
+// FOG_BIT.
+#include "state/api_util.h"
 #include "dispatch.h"
+#include "state/area.h"
 
 namespace pineda {
 
@@ -15,7 +17,7 @@ inline float int_color(GLint c) {
 // glFog with the value(s) as doubles (colours already converted); `vector` for the v forms.
 void fog(const char* func, GLenum pname, const double* v, const float* color, bool vector) {
   PINEDA_CTX_OUTSIDE(func);
-  FogState& f = ctx->texpipe.fog;
+  FogGroup& f = ctx->fog;
   const auto as_enum = [](double d) {
     const auto e = static_cast<GLenum>(d >= 0.0 && d < 4294967296.0 ? d : 0.0);
     return static_cast<double>(e) == d ? e : GLenum{0};
@@ -64,10 +66,59 @@ void fog(const char* func, GLenum pname, const double* v, const float* color, bo
 inline void fog_coord(float c) {
   Context* ctx = current_context();
   if (ctx == nullptr) return;
-  ctx->texpipe.cur_fog_coord = c;
+  ctx->current.fog_coord = c;
 }
 
+bool get_fog(Context& ctx, GLenum pname, QueryValues& out) {
+  const FogGroup& fog = ctx.fog;
+  switch (pname) {
+  case GL_FOG_COLOR:
+    out.normalized(fog.color, 4);
+    return true;
+  case GL_FOG_INDEX:
+    out.floats({fog.index});
+    return true;
+  case GL_FOG_DENSITY:
+    out.floats({fog.density});
+    return true;
+  case GL_FOG_START:
+    out.floats({fog.start});
+    return true;
+  case GL_FOG_END:
+    out.floats({fog.end});
+    return true;
+  case GL_FOG_MODE:
+    out.ints({double(fog.mode)});
+    return true;
+  case GL_FOG_COORD_SRC:
+    out.ints({double(fog.coord_src)});
+    return true;
+  default:
+    return false;
+  }
+}
+
+constexpr Capability kFogCaps[] = {
+    {GL_FOG, 1, CapabilityKind::kServer, kDirtyFog,
+     [](Context& c, unsigned, unsigned) { return &c.fog.enabled; }},
+    // §3.9: the colour sum is folded into the vertex colours with the lit secondary colour
+    // (geometry/transform.cpp), so it invalidates the lighting-derived state.
+    {GL_COLOR_SUM, 1, CapabilityKind::kServer, kDirtyLighting,
+     [](Context& c, unsigned, unsigned) { return &c.fog.color_sum; }},
+};
+
+constexpr AttribGroup kFogGroups[] = {
+    member_group<&Context::fog>(GL_FOG_BIT, kDirtyFog | kDirtyLighting),
+};
+
 } // namespace
+
+const StateArea kFogArea = {
+    .name = "fog (GL 2.1 §3.9, §3.10, Table 6.11)",
+    .capabilities = kFogCaps,
+    .get = get_fog,
+    .groups = kFogGroups,
+};
 
 namespace exec {
 

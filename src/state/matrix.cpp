@@ -1,22 +1,25 @@
 // Matrices and matrix stacks (GL 2.1 §2.11.2): glMatrixMode, load/mult (also transposed),
-// rotate/translate/scale, frustum/ortho, push/pop.
+// rotate/translate/scale, frustum/ortho, push/pop; and the transformation area (Table 6.7,
+// transform.h): the matrix, clip-plane and normal-processing queries, capabilities, the
+// TRANSFORM_BIT group and the composite matrix derived for the draws.
 #include <cmath>
 
 #include <glm/gtc/type_ptr.hpp>
 
-#include "core/api_util.h"
+#include "state/api_util.h"
 #include "dispatch.h"
+#include "state/area.h"
 
 namespace pineda {
 
 namespace {
 
 MatrixStack& current_stack(Context* ctx) {
-  switch (ctx->matrix_mode) {
+  switch (ctx->transform.matrix_mode) {
   case GL_PROJECTION:
     return ctx->projection;
   case GL_TEXTURE:
-    return ctx->texture[ctx->active_texture];
+    return ctx->texture_matrix[ctx->texture.active];
   default:
     return ctx->modelview;
   }
@@ -25,7 +28,7 @@ MatrixStack& current_stack(Context* ctx) {
 // Only the modelview and projection matrices feed the composite; texture matrices feed the
 // per-vertex texture coordinate setup (validate_texpipe.cpp).
 void matrix_changed(Context* ctx) {
-  if (ctx->matrix_mode != GL_TEXTURE)
+  if (ctx->transform.matrix_mode != GL_TEXTURE)
     mark_dirty(ctx, kDirtyTransform | kDirtyClipPlanes);
   else
     mark_dirty(ctx, kDirtyTexture);
@@ -98,7 +101,96 @@ glm::mat4 scaling(double x, double y, double z) {
   return r;
 }
 
+void put_matrix(QueryValues& out, const glm::mat4& m, bool transpose) {
+  out.kind = QueryKind::kFloat;
+  for (int c = 0; c < 4; ++c)
+    for (int r = 0; r < 4; ++r)
+      out.add(transpose ? m[r][c] : m[c][r]);
+}
+
+// Tables 6.7, 6.36, 6.37.
+bool get_transform(Context& ctx, GLenum pname, QueryValues& out) {
+  const MatrixStack& tex = ctx.texture_matrix[ctx.texture.active];
+  switch (pname) {
+  case GL_MATRIX_MODE:
+    out.ints({double(ctx.transform.matrix_mode)});
+    return true;
+  case GL_MODELVIEW_MATRIX:
+    put_matrix(out, ctx.modelview.top(), false);
+    return true;
+  case GL_PROJECTION_MATRIX:
+    put_matrix(out, ctx.projection.top(), false);
+    return true;
+  case GL_TEXTURE_MATRIX:
+    put_matrix(out, tex.top(), false);
+    return true;
+  case GL_TRANSPOSE_MODELVIEW_MATRIX:
+    put_matrix(out, ctx.modelview.top(), true);
+    return true;
+  case GL_TRANSPOSE_PROJECTION_MATRIX:
+    put_matrix(out, ctx.projection.top(), true);
+    return true;
+  case GL_TRANSPOSE_TEXTURE_MATRIX:
+    put_matrix(out, tex.top(), true);
+    return true;
+  case GL_MODELVIEW_STACK_DEPTH:
+    out.ints({double(ctx.modelview.stack.size())});
+    return true;
+  case GL_PROJECTION_STACK_DEPTH:
+    out.ints({double(ctx.projection.stack.size())});
+    return true;
+  case GL_TEXTURE_STACK_DEPTH:
+    out.ints({double(tex.stack.size())});
+    return true;
+  case GL_MAX_MODELVIEW_STACK_DEPTH:
+    out.ints({double(kModelviewStackDepth)});
+    return true;
+  case GL_MAX_PROJECTION_STACK_DEPTH:
+    out.ints({double(kProjectionStackDepth)});
+    return true;
+  case GL_MAX_TEXTURE_STACK_DEPTH:
+    out.ints({double(kTextureStackDepth)});
+    return true;
+  case GL_MAX_CLIP_PLANES:
+    out.ints({double(kMaxClipPlanes)});
+    return true;
+  default:
+    return false;
+  }
+}
+
+// The composite matrix (§2.11): projection * modelview; and the model-view matrix itself at an
+// address that does not move with the stack (the draws' DrawSources).
+void derive_transform(Context& ctx, uint32_t) {
+  ctx.mvp = ctx.projection.top() * ctx.modelview.top();
+  ctx.modelview_matrix = ctx.modelview.top();
+}
+
+constexpr Capability kTransformCaps[] = {
+    // §2.12: user clip planes.
+    {GL_CLIP_PLANE0, kMaxClipPlanes, CapabilityKind::kServer, kDirtyClipPlanes,
+     [](Context& c, unsigned i, unsigned) { return &c.transform.clip_enabled[i]; }},
+    // §2.11.3: normals are rescaled or normalized before lighting.
+    {GL_NORMALIZE, 1, CapabilityKind::kServer, kDirtyLighting,
+     [](Context& c, unsigned, unsigned) { return &c.transform.normalize; }},
+    {GL_RESCALE_NORMAL, 1, CapabilityKind::kServer, kDirtyLighting,
+     [](Context& c, unsigned, unsigned) { return &c.transform.rescale_normal; }},
+};
+
+constexpr AttribGroup kTransformGroups[] = {
+    member_group<&Context::transform>(GL_TRANSFORM_BIT, kDirtyClipPlanes | kDirtyLighting),
+};
+
 } // namespace
+
+const StateArea kTransformArea = {
+    .name = "transformation (GL 2.1 §2.11, §2.12, Table 6.7)",
+    .capabilities = kTransformCaps,
+    .get = get_transform,
+    .groups = kTransformGroups,
+    .derive_on = kDirtyTransform,
+    .derive = derive_transform,
+};
 
 namespace exec {
 
@@ -108,7 +200,7 @@ void GLAPIENTRY MatrixMode(GLenum mode) {
     record_error(ctx, GL_INVALID_ENUM, "glMatrixMode", mode);
     return;
   }
-  ctx->matrix_mode = mode;
+  ctx->transform.matrix_mode = mode;
 }
 
 void GLAPIENTRY LoadIdentity() {

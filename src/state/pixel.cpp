@@ -1,11 +1,12 @@
 // Pixel transfer modes (GL 2.1 §3.6.3): glPixelTransfer, glPixelMap, glGetPixelMap (§6.1.3),
-// glPixelZoom (§3.6.4), and the glGet values of the pixel and raster position state
-// (Tables 6.5, 6.23-6.27).
+// glPixelZoom (§3.6.4); and the pixel area (Tables 6.23-6.27, pixel.h): its queries, the
+// PIXEL_MODE group and the client pixel-store group (glPixelStore is in buffers.cpp).
 #include <algorithm>
 #include <cmath>
 
-#include "core/api_util.h"
+#include "state/api_util.h"
 #include "dispatch.h"
+#include "state/area.h"
 
 namespace pineda {
 
@@ -21,7 +22,7 @@ int round_param(double v) {
 
 void pixel_transfer(const char* func, GLenum pname, double value) {
   PINEDA_CTX_OUTSIDE(func);
-  PixelTransfer& x = ctx->pixel_transfer;
+  PixelTransfer& x = ctx->pixel.transfer;
   const float f = static_cast<float>(value);
   switch (pname) {
   case GL_MAP_COLOR:
@@ -83,7 +84,7 @@ void pixel_map(const char* func, GLenum map, GLsizei size, const T* values, Conv
   if (pixel_map_index_addressed(id) && (size & (size - 1)) != 0)
     return record_error(ctx, GL_INVALID_VALUE, func);
   if (values == nullptr) return;
-  PixelMap& pm = ctx->pixel_transfer.maps[id];
+  PixelMap& pm = ctx->pixel_maps.maps[id];
   pm.size = size;
   for (int i = 0; i < size; ++i)
     pm.values[i] = convert(values[i], id);
@@ -105,7 +106,7 @@ void get_pixel_map(const char* func, GLenum map, T* values, Convert convert) {
   const int id = pixel_map_id(map);
   if (id < 0) return record_error(ctx, GL_INVALID_ENUM, func, map);
   if (values == nullptr) return;
-  const PixelMap& pm = ctx->pixel_transfer.maps[id];
+  const PixelMap& pm = ctx->pixel_maps.maps[id];
   for (int i = 0; i < pm.size; ++i)
     values[i] = convert(pm.values[i], id);
 }
@@ -123,73 +124,140 @@ double index_entry(float f, double max) {
 
 } // namespace
 
-int pixel_query(const Context* ctx, GLenum pname, double* v, int* kind) {
-  enum { kInt, kBool, kFloat, kNormalized }; // get.cpp's Kind, in order
-  const PixelTransfer& x = ctx->pixel_transfer;
-  const RasterPos& rp = ctx->raster_pos;
-  const auto put = [&](int k, std::initializer_list<double> vals) {
-    *kind = k;
-    int n = 0;
-    for (double d : vals)
-      v[n++] = d;
-    return n;
-  };
-  if (const int id = pixel_map_size_id(pname); id >= 0) return put(kInt, {double(x.maps[id].size)});
+namespace {
+
+// Tables 6.23-6.27: pixel store, transfer modes, map sizes, zoom and the read buffer.
+bool get_pixel(Context& ctx, GLenum pname, QueryValues& out) {
+  const PixelTransfer& x = ctx.pixel.transfer;
+  if (const int id = pixel_map_size_id(pname); id >= 0) {
+    out.ints({double(ctx.pixel_maps.maps[id].size)});
+    return true;
+  }
+  const PixelStore& pack = ctx.pixel_store.pack;
+  const PixelStore& unpack = ctx.pixel_store.unpack;
   switch (pname) {
   case GL_MAP_COLOR:
-    return put(kBool, {x.map_color ? 1.0 : 0.0});
+    out.boolean(x.map_color);
+    return true;
   case GL_MAP_STENCIL:
-    return put(kBool, {x.map_stencil ? 1.0 : 0.0});
+    out.boolean(x.map_stencil);
+    return true;
   case GL_INDEX_SHIFT:
-    return put(kInt, {double(x.index_shift)});
+    out.ints({double(x.index_shift)});
+    return true;
   case GL_INDEX_OFFSET:
-    return put(kInt, {double(x.index_offset)});
+    out.ints({double(x.index_offset)});
+    return true;
   case GL_RED_SCALE:
-    return put(kFloat, {x.scale[0]});
+    out.floats({x.scale[0]});
+    return true;
   case GL_GREEN_SCALE:
-    return put(kFloat, {x.scale[1]});
+    out.floats({x.scale[1]});
+    return true;
   case GL_BLUE_SCALE:
-    return put(kFloat, {x.scale[2]});
+    out.floats({x.scale[2]});
+    return true;
   case GL_ALPHA_SCALE:
-    return put(kFloat, {x.scale[3]});
+    out.floats({x.scale[3]});
+    return true;
   case GL_RED_BIAS:
-    return put(kFloat, {x.bias[0]});
+    out.floats({x.bias[0]});
+    return true;
   case GL_GREEN_BIAS:
-    return put(kFloat, {x.bias[1]});
+    out.floats({x.bias[1]});
+    return true;
   case GL_BLUE_BIAS:
-    return put(kFloat, {x.bias[2]});
+    out.floats({x.bias[2]});
+    return true;
   case GL_ALPHA_BIAS:
-    return put(kFloat, {x.bias[3]});
+    out.floats({x.bias[3]});
+    return true;
   case GL_DEPTH_SCALE:
-    return put(kFloat, {x.depth_scale});
+    out.floats({x.depth_scale});
+    return true;
   case GL_DEPTH_BIAS:
-    return put(kFloat, {x.depth_bias});
+    out.floats({x.depth_bias});
+    return true;
   case GL_ZOOM_X:
-    return put(kFloat, {x.zoom_x});
+    out.floats({ctx.pixel.zoom_x});
+    return true;
   case GL_ZOOM_Y:
-    return put(kFloat, {x.zoom_y});
+    out.floats({ctx.pixel.zoom_y});
+    return true;
   case GL_MAX_PIXEL_MAP_TABLE:
-    return put(kInt, {double(kMaxPixelMapTable)});
-  // Table 6.5: the current raster position and its associated data.
-  case GL_CURRENT_RASTER_POSITION:
-    return put(kFloat, {rp.win[0], rp.win[1], rp.win[2], rp.win[3]});
-  case GL_CURRENT_RASTER_POSITION_VALID:
-    return put(kBool, {rp.valid ? 1.0 : 0.0});
-  case GL_CURRENT_RASTER_DISTANCE:
-    return put(kFloat, {rp.distance});
-  case GL_CURRENT_RASTER_COLOR:
-    return put(kNormalized, {rp.color[0], rp.color[1], rp.color[2], rp.color[3]});
-  case GL_CURRENT_RASTER_SECONDARY_COLOR:
-    return put(kNormalized, {rp.color2[0], rp.color2[1], rp.color2[2], rp.color2[3]});
-  case GL_CURRENT_RASTER_INDEX:
-    return put(kFloat, {rp.index});
-  case GL_CURRENT_RASTER_TEXTURE_COORDS: {
-    const float* t = rp.tex[ctx->active_texture];
-    return put(kFloat, {t[0], t[1], t[2], t[3]});
-  }
+    out.ints({kMaxPixelMapTable});
+    return true;
+  case GL_READ_BUFFER:
+    out.ints({double(ctx.pixel.read_buffer)});
+    return true;
+  case GL_PACK_SWAP_BYTES:
+    out.boolean(pack.swap_bytes);
+    return true;
+  case GL_PACK_LSB_FIRST:
+    out.boolean(pack.lsb_first);
+    return true;
+  case GL_PACK_ROW_LENGTH:
+    out.ints({double(pack.row_length)});
+    return true;
+  case GL_PACK_SKIP_ROWS:
+    out.ints({double(pack.skip_rows)});
+    return true;
+  case GL_PACK_SKIP_PIXELS:
+    out.ints({double(pack.skip_pixels)});
+    return true;
+  case GL_PACK_ALIGNMENT:
+    out.ints({double(pack.alignment)});
+    return true;
+  case GL_PACK_IMAGE_HEIGHT:
+    out.ints({double(pack.image_height)});
+    return true;
+  case GL_PACK_SKIP_IMAGES:
+    out.ints({double(pack.skip_images)});
+    return true;
+  case GL_UNPACK_SWAP_BYTES:
+    out.boolean(unpack.swap_bytes);
+    return true;
+  case GL_UNPACK_LSB_FIRST:
+    out.boolean(unpack.lsb_first);
+    return true;
+  case GL_UNPACK_ROW_LENGTH:
+    out.ints({double(unpack.row_length)});
+    return true;
+  case GL_UNPACK_SKIP_ROWS:
+    out.ints({double(unpack.skip_rows)});
+    return true;
+  case GL_UNPACK_SKIP_PIXELS:
+    out.ints({double(unpack.skip_pixels)});
+    return true;
+  case GL_UNPACK_ALIGNMENT:
+    out.ints({double(unpack.alignment)});
+    return true;
+  case GL_UNPACK_IMAGE_HEIGHT:
+    out.ints({double(unpack.image_height)});
+    return true;
+  case GL_UNPACK_SKIP_IMAGES:
+    out.ints({double(unpack.skip_images)});
+    return true;
   default:
-    return 0;
+    return false;
   }
+}
+
+constexpr AttribGroup kPixelGroups[] = {
+    member_group<&Context::pixel>(GL_PIXEL_MODE_BIT, kDirtyPixel),
+    member_group<&Context::pixel_store>(GL_CLIENT_PIXEL_STORE_BIT, 0, true),
+};
+
+} // namespace
+
+const StateArea kPixelArea = {
+    .name = "pixels (GL 2.1 §3.6, §4.3, Tables 6.23-6.27)",
+    .get = get_pixel,
+    .groups = kPixelGroups,
+};
+
+PixelTransferView pixel_transfer_view(const Context* ctx) {
+  return {ctx->pixel.transfer, ctx->pixel_maps};
 }
 
 namespace exec {
@@ -203,8 +271,8 @@ void GLAPIENTRY PixelTransferi(GLenum pname, GLint param) {
 
 void GLAPIENTRY PixelZoom(GLfloat xfactor, GLfloat yfactor) {
   PINEDA_CTX_OUTSIDE("glPixelZoom");
-  ctx->pixel_transfer.zoom_x = xfactor;
-  ctx->pixel_transfer.zoom_y = yfactor;
+  ctx->pixel.zoom_x = xfactor;
+  ctx->pixel.zoom_y = yfactor;
   mark_dirty(ctx, kDirtyPixel);
 }
 

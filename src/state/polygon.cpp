@@ -1,5 +1,5 @@
 // Polygon rasterization state and shading (GL 2.1 §3.5.1, §3.5.4, §2.14.7).
-#include "core/api_util.h"
+#include "state/api_util.h"
 #include "dispatch.h"
 
 namespace pineda {
@@ -11,8 +11,8 @@ void GLAPIENTRY FrontFace(GLenum mode) {
     record_error(ctx, GL_INVALID_ENUM, "glFrontFace", mode);
     return;
   }
-  if (ctx->front_face == mode) return;
-  ctx->front_face = mode;
+  if (ctx->polygon.front_face == mode) return;
+  ctx->polygon.front_face = mode;
   mark_dirty(ctx, kDirtyPolygon);
 }
 
@@ -22,8 +22,8 @@ void GLAPIENTRY CullFace(GLenum mode) {
     record_error(ctx, GL_INVALID_ENUM, "glCullFace", mode);
     return;
   }
-  if (ctx->cull_face == mode) return;
-  ctx->cull_face = mode;
+  if (ctx->polygon.cull_face == mode) return;
+  ctx->polygon.cull_face = mode;
   mark_dirty(ctx, kDirtyPolygon);
 }
 
@@ -37,8 +37,8 @@ void GLAPIENTRY PolygonMode(GLenum face, GLenum mode) {
     record_error(ctx, GL_INVALID_ENUM, "glPolygonMode", mode);
     return;
   }
-  if (face != GL_BACK) ctx->polygon_mode[0] = mode;
-  if (face != GL_FRONT) ctx->polygon_mode[1] = mode;
+  if (face != GL_BACK) ctx->polygon.mode[0] = mode;
+  if (face != GL_FRONT) ctx->polygon.mode[1] = mode;
   mark_dirty(ctx, kDirtyPolygon);
 }
 
@@ -48,8 +48,8 @@ void GLAPIENTRY ShadeModel(GLenum mode) {
     record_error(ctx, GL_INVALID_ENUM, "glShadeModel", mode);
     return;
   }
-  if (ctx->shade_model == mode) return;
-  ctx->shade_model = mode;
+  if (ctx->lighting.shade_model == mode) return;
+  ctx->lighting.shade_model = mode;
   mark_dirty(ctx, kDirtyPolygon);
 }
 

@@ -5,7 +5,7 @@
 // Rendering is synchronous, so a result is available as soon as EndQuery returns.
 #include <limits>
 
-#include "core/api_util.h"
+#include "state/api_util.h"
 #include "dispatch.h"
 
 namespace pineda {

@@ -5,9 +5,10 @@
 
 #include <glm/vec4.hpp>
 
-#include "core/api_util.h"
+#include "state/api_util.h"
 #include "dispatch.h"
-#include "geometry/geometry.h"
+#include "state/draw_call.h"
+#include "state/validate.h"
 #include "geometry/light_eval.h"
 #include "state/select.h"
 
@@ -22,7 +23,7 @@ inline float clamp01(float v) {
 void raster_pos(float x, float y, float z, float w) {
   PINEDA_CTX_OUTSIDE("glRasterPos");
   validate_state(ctx);
-  RasterPos& rp = ctx->raster_pos;
+  RasterPos& rp = ctx->current.raster_pos;
   const glm::vec4 obj(x, y, z, w);
   const glm::vec4 eye = ctx->modelview.top() * obj;
   // The composite matrix, as the vertex path uses, so a raster position lands where a point
@@ -34,8 +35,8 @@ void raster_pos(float x, float y, float z, float w) {
   bool inside = clip.w > 0.0f && -clip.w <= clip.x && clip.x <= clip.w && -clip.w <= clip.y &&
                 clip.y <= clip.w && -clip.w <= clip.z && clip.z <= clip.w;
   for (int i = 0; i < kMaxClipPlanes && inside; ++i) {
-    if (!ctx->clip_enabled[i]) continue;
-    const double* p = ctx->clip_plane[i];
+    if (!ctx->transform.clip_enabled[i]) continue;
+    const double* p = ctx->transform.clip_plane[i];
     inside = p[0] * eye.x + p[1] * eye.y + p[2] * eye.z + p[3] * eye.w >= 0.0;
   }
   if (!inside) {
@@ -56,30 +57,31 @@ void raster_pos(float x, float y, float z, float w) {
   // §2.13: with fog source FOG_COORD the current fog coordinate, otherwise the distance from
   // the eye-coordinate origin. A coordinate under every FOG_HINT: the raster position keeps
   // no fog factor.
-  rp.distance = ctx->texpipe.fog.coord_src == GL_FOG_COORD
-                    ? ctx->texpipe.cur_fog_coord
+  rp.distance = ctx->fog.coord_src == GL_FOG_COORD
+                    ? ctx->current.fog_coord
                     : std::sqrt(eye.x * eye.x + eye.y * eye.y + eye.z * eye.z);
   // Colours "just as is done for a vertex" (§2.14): lit, or the clamped current colours.
   // Raster positions have no facing; the front colours are the ones kept.
-  const LightingState& ls = ctx->lighting;
+  const LightingGroup& ls = ctx->lighting;
   if (ls.enabled) {
     float attr[kMaxAttr] = {};
-    light_vertex(ls.setup, ls.material, &obj[0], ctx->cur_normal, ctx->cur_color, attr);
+    light_vertex(ctx->light_setup, ls.material, &obj[0], ctx->current.normal, ctx->current.color,
+                 attr);
     for (int c = 0; c < 4; ++c)
       rp.color[c] = attr[kAttrColor + c];
     for (int c = 0; c < 3; ++c)
-      rp.color2[c] = ls.setup.separate_specular ? attr[kAttrColor2 + c] : 0.0f;
+      rp.color2[c] = ctx->light_setup.separate_specular ? attr[kAttrColor2 + c] : 0.0f;
     rp.color2[3] = 1.0f;
   } else {
     for (int c = 0; c < 4; ++c)
-      rp.color[c] = clamp01(ctx->cur_color[c]);
+      rp.color[c] = clamp01(ctx->current.color[c]);
     for (int c = 0; c < 4; ++c)
-      rp.color2[c] = clamp01(ctx->cur_color2[c]);
+      rp.color2[c] = clamp01(ctx->current.color2[c]);
   }
   // Texture coordinates through each unit's texture matrix (§2.11.4).
   for (int u = 0; u < kMaxTexUnits; ++u) {
-    const float* t = ctx->cur_tex[u];
-    const glm::vec4 tc = ctx->texture[u].top() * glm::vec4(t[0], t[1], t[2], t[3]);
+    const float* t = ctx->current.tex[u];
+    const glm::vec4 tc = ctx->texture_matrix[u].top() * glm::vec4(t[0], t[1], t[2], t[3]);
     for (int i = 0; i < 4; ++i)
       rp.tex[u][i] = tc[i];
   }
@@ -90,8 +92,8 @@ void raster_pos(float x, float y, float z, float w) {
 // transformation, lighting or clipping; the valid bit is set.
 void window_pos(float x, float y, float z) {
   PINEDA_CTX_OUTSIDE("glWindowPos");
-  RasterPos& rp = ctx->raster_pos;
-  const double n = ctx->depth_near, f = ctx->depth_far;
+  RasterPos& rp = ctx->current.raster_pos;
+  const double n = ctx->viewport.near, f = ctx->viewport.far;
   rp.win[0] = x;
   rp.win[1] = y;
   rp.win[2] = static_cast<float>(z <= 0.0f ? n : z >= 1.0f ? f : n + z * (f - n));
@@ -99,14 +101,14 @@ void window_pos(float x, float y, float z) {
   rp.valid = true;
   select_raster_hit(ctx, rp.win[2]); // §5.2, as for RasterPos
   // §2.13: the current fog coordinate with fog source FOG_COORD, otherwise 0.
-  rp.distance = ctx->texpipe.fog.coord_src == GL_FOG_COORD ? ctx->texpipe.cur_fog_coord : 0.0f;
+  rp.distance = ctx->fog.coord_src == GL_FOG_COORD ? ctx->current.fog_coord : 0.0f;
   for (int c = 0; c < 4; ++c)
-    rp.color[c] = clamp01(ctx->cur_color[c]);
+    rp.color[c] = clamp01(ctx->current.color[c]);
   for (int c = 0; c < 4; ++c)
-    rp.color2[c] = clamp01(ctx->cur_color2[c]);
+    rp.color2[c] = clamp01(ctx->current.color2[c]);
   for (int u = 0; u < kMaxTexUnits; ++u)
     for (int i = 0; i < 4; ++i)
-      rp.tex[u][i] = ctx->cur_tex[u][i];
+      rp.tex[u][i] = ctx->current.tex[u][i];
   mark_dirty(ctx, kDirtyPixel);
 }
 

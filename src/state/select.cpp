@@ -1,10 +1,11 @@
 // Selection (GL 2.1 §5.2) and feedback (§5.3): glRenderMode, the selection array and name
 // stack, the feedback array and glPassThrough, and the helpers that write hit records and
-// feedback values. The primitives themselves come from geometry/feedback.cpp.
+// feedback values. The primitives themselves come from the draw home (draw/feedback.cpp).
 #include <cmath>
 
-#include "core/api_util.h"
+#include "state/api_util.h"
 #include "dispatch.h"
+#include "state/area.h"
 #include "state/select.h"
 
 namespace pineda {
@@ -66,12 +67,6 @@ Context* name_stack_context(const char* func) {
   return ctx;
 }
 
-} // namespace
-
-bool render_mode_is_render(const Context* ctx) {
-  return ctx->render_mode.mode == GL_RENDER;
-}
-
 void select_record_hit(RenderModeState& rm, float zmin, float zmax) {
   rm.hit = true;
   if (zmin < rm.hit_min_z) rm.hit_min_z = zmin;
@@ -102,6 +97,23 @@ void feedback_vertex(RenderModeState& rm, const float win[3], float clip_w, cons
     feedback_value(rm, tex[k]);
 }
 
+} // namespace
+
+bool render_mode_is_render(const Context* ctx) {
+  return ctx->render_mode.mode == GL_RENDER;
+}
+
+void RenderModeRecords::hit(float zmin, float zmax) {
+  select_record_hit(rm_, zmin, zmax);
+}
+void RenderModeRecords::value(float v) {
+  feedback_value(rm_, v);
+}
+void RenderModeRecords::vertex(const float win[3], float clip_w, const float color[4],
+                               const float tex[4]) {
+  feedback_vertex(rm_, win, clip_w, color, tex);
+}
+
 void feedback_raster_token(Context* ctx, GLenum token, const float win[4], const float color[4],
                            const float tex[4]) {
   RenderModeState& rm = ctx->render_mode;
@@ -116,62 +128,55 @@ void select_raster_hit(Context* ctx, float win_z) {
   select_record_hit(rm, win_z, win_z);
 }
 
-bool select_state_values(Context* ctx, GLenum pname, double v[4], int* n, bool* normalized) {
-  const RenderModeState& rm = ctx->render_mode;
-  double x = 0;
+namespace {
+
+// Table 6.31: selection and feedback.
+bool get_select(Context& ctx, GLenum pname, QueryValues& out) {
+  const RenderModeState& rm = ctx.render_mode;
   switch (pname) {
   case GL_RENDER_MODE:
-    x = rm.mode;
-    break;
+    out.ints({double(rm.mode)});
+    return true;
   case GL_NAME_STACK_DEPTH:
-    x = rm.name_depth;
-    break;
+    out.ints({double(rm.name_depth)});
+    return true;
   case GL_MAX_NAME_STACK_DEPTH:
-    x = kMaxNameStackDepth;
-    break;
+    out.ints({kMaxNameStackDepth});
+    return true;
   case GL_SELECTION_BUFFER_SIZE:
-    x = rm.select_size;
-    break;
+    out.ints({double(rm.select_size)});
+    return true;
   case GL_FEEDBACK_BUFFER_SIZE:
-    x = rm.feedback_size;
-    break;
+    out.ints({double(rm.feedback_size)});
+    return true;
   case GL_FEEDBACK_BUFFER_TYPE:
-    x = rm.feedback_type;
-    break;
-  // GL 2.1 Table 6.34: 16 signed bits per channel, as Mesa allocates for any request.
-  case GL_ACCUM_RED_BITS:
-  case GL_ACCUM_GREEN_BITS:
-  case GL_ACCUM_BLUE_BITS:
-  case GL_ACCUM_ALPHA_BITS:
-    x = ctx->fb.accum != nullptr ? ctx->fb.accum_bits : 0;
-    break;
-  case GL_ACCUM_CLEAR_VALUE:
-    for (int k = 0; k < 4; ++k)
-      v[k] = ctx->accum.clear[k];
-    *n = 4;
-    *normalized = true;
-    return true;
-  default:
-    return false; // *n and *normalized untouched
-  }
-  v[0] = x;
-  *n = 1;
-  *normalized = false;
-  return true;
-}
-
-bool select_state_pointer(Context* ctx, GLenum pname, void** out) {
-  switch (pname) {
-  case GL_SELECTION_BUFFER_POINTER:
-    *out = ctx->render_mode.select_buffer;
-    return true;
-  case GL_FEEDBACK_BUFFER_POINTER:
-    *out = ctx->render_mode.feedback_buffer;
+    out.ints({double(rm.feedback_type)});
     return true;
   default:
     return false;
   }
 }
+
+bool get_select_pointer(Context& ctx, GLenum pname, void** out) {
+  switch (pname) {
+  case GL_SELECTION_BUFFER_POINTER:
+    *out = ctx.render_mode.select_buffer;
+    return true;
+  case GL_FEEDBACK_BUFFER_POINTER:
+    *out = ctx.render_mode.feedback_buffer;
+    return true;
+  default:
+    return false;
+  }
+}
+
+} // namespace
+
+const StateArea kSelectArea = {
+    .name = "selection and feedback (GL 2.1 §5.2, §5.3, Table 6.31)",
+    .get = get_select,
+    .get_pointer = get_select_pointer,
+};
 
 namespace exec {
 

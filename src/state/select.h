@@ -1,6 +1,6 @@
-// Selection and feedback (GL 2.1 §5.2, §5.3), occlusion queries (§4.1.7, §6.1.12) and the
-// accumulation buffer's state (§4.2.4): the context state, and the hooks other parts of
-// Pineda call (the draw path, the pixel paths, glGet, glClear).
+// Selection and feedback (GL 2.1 §5.2, §5.3; Table 6.31) and occlusion queries (§4.1.7,
+// §6.1.12): the context state, and the functions other parts of Pineda call (the draw path,
+// the pixel paths, glClear).
 #pragma once
 
 #include <GL/gl.h>
@@ -9,15 +9,13 @@
 #include <cstdint>
 #include <unordered_map>
 
-#include "geometry/vertex.h"
+#include "core/vertex.h"
+#include "draw/draw.h"
+#include "core/limits.h"
 
 namespace pineda {
 
 struct Context;
-struct InputVertex;
-
-// GL 2.1 §5.2: the name stack must hold at least 64 names (MAX_NAME_STACK_DEPTH).
-constexpr int kMaxNameStackDepth = 64;
 
 // RENDER_MODE and the selection and feedback state of GL 2.1 Table 6.31 (§5.2, §5.3).
 struct RenderModeState {
@@ -58,22 +56,28 @@ struct QueryState {
   uint64_t samples_passed = 0; // samples counted since BeginQuery (the fragment stage adds)
 };
 
-// The accumulation buffer's context state (Table 6.22).
-struct AccumState {
-  float clear[4] = {0, 0, 0, 0}; // ACCUM_CLEAR_VALUE, clamped to [-1, 1]
-};
-
-// ---- hooks for the rest of Pineda ----
+// ---- for the rest of Pineda ----
 
 // True in RENDER mode; in SELECT and FEEDBACK mode nothing reaches the framebuffer (GL 2.1
 // §5.2, §5.3): draws, clears, accumulation and pixel rectangles update no pixel.
 bool render_mode_is_render(const Context* ctx);
 
-// The draw path in SELECT or FEEDBACK mode (geometry/feedback.cpp): the `n` transformed
-// vertices `verts` (from `in`) are assembled in `mode`, clipped and culled like a draw, and
-// the primitives become selection hits or feedback values instead of fragments.
-void select_feedback_draw(Context* ctx, const InputVertex* in, PVertex* verts, size_t n,
-                          GLenum mode, const uint32_t* indices, size_t count);
+// The selection or feedback state as the draw home writes into it (draw/draw.h): what the
+// state layer hands down with a draw in SELECT or FEEDBACK mode.
+class RenderModeRecords final : public RenderRecords {
+public:
+  explicit RenderModeRecords(RenderModeState& rm) : rm_(rm) {}
+  bool selecting() const override { return rm_.mode == GL_SELECT; }
+  bool textured() const override {
+    return rm_.feedback_type == GL_3D_COLOR_TEXTURE || rm_.feedback_type == GL_4D_COLOR_TEXTURE;
+  }
+  void hit(float zmin, float zmax) override;
+  void value(float v) override;
+  void vertex(const float win[3], float clip_w, const float color[4], const float tex[4]) override;
+
+private:
+  RenderModeState& rm_;
+};
 
 // GL 2.1 §5.3: glBitmap, glDrawPixels and glCopyPixels in FEEDBACK mode with a valid raster
 // position write `token` (GL_BITMAP_TOKEN, GL_DRAW_PIXEL_TOKEN or GL_COPY_PIXEL_TOKEN) and the
@@ -87,24 +91,8 @@ void feedback_raster_token(Context* ctx, GLenum token, const float win[4], const
 // window depth `win_z`. Does nothing outside SELECT mode.
 void select_raster_hit(Context* ctx, float win_z);
 
-// Selection: one primitive that survived clipping (and culling) hit, with these window z
-// extremes (select.cpp).
-void select_record_hit(RenderModeState& rm, float zmin, float zmax);
-
-// Feedback: append one value; beyond the buffer's size the overflow flag is set instead.
-void feedback_value(RenderModeState& rm, float v);
-
-// Feedback: one vertex of the current feedback type (Table 5.2).
-void feedback_vertex(RenderModeState& rm, const float win[3], float clip_w, const float color[4],
-                     const float tex[4]);
-
-// glGet values of the state in this header (RENDER_MODE, selection, feedback, name stack,
-// accumulation buffer): up to four values in `v`; `normalized` when they map to the full
-// integer range in GetIntegerv (GL 2.1 §6.1.2). False when pname is not one of them.
-bool select_state_values(Context* ctx, GLenum pname, double v[4], int* n, bool* normalized);
-
-// glGetPointerv for SELECTION_BUFFER_POINTER and FEEDBACK_BUFFER_POINTER.
-bool select_state_pointer(Context* ctx, GLenum pname, void** out);
+struct StateArea;
+extern const StateArea kSelectArea; // select.cpp
 
 // glClear(GL_ACCUM_BUFFER_BIT) (accum.cpp): fill the accumulation buffer, within the scissor
 // box when the scissor test is on, with the clear value. No-op without an accumulation buffer.

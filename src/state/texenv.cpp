@@ -1,15 +1,17 @@
 // Texture units (GL 2.1 §2.7 ActiveTexture, §2.8 ClientActiveTexture, MultiTexCoord), the
 // texture target and coordinate-generation enables (§3.8.15, §2.11.4), the texture
 // environment (§3.8.13, TexEnv and GetTexEnv) and coordinate generation (§2.11.4, TexGen and
-// GetTexGen), with their glGet queries and their part of the attribute stack (§6.1.14).
+// GetTexGen); the texture-unit area (texenv.h): its capabilities, queries, TEXTURE_BIT group
+// and the derived texturing setup (validate_texpipe.cpp).
 #include <cmath>
 #include <limits>
 
 #include <glm/mat4x4.hpp>
 #include <glm/matrix.hpp>
 
-#include "core/api_util.h"
+#include "state/api_util.h"
 #include "dispatch.h"
+#include "state/area.h"
 
 namespace pineda {
 
@@ -36,8 +38,8 @@ GLint float_to_int(double v) {
   return static_cast<GLint>(std::lround(v));
 }
 
-TexUnitState& active_unit(Context* ctx) {
-  return ctx->texpipe.unit[ctx->active_texture];
+TexUnit& active_unit(Context* ctx) {
+  return ctx->texture.unit[ctx->texture.active];
 }
 
 // ---- texture environment (GL 2.1 §3.8.13) ----
@@ -327,141 +329,66 @@ inline void multi_texcoord(GLenum target, float s, float t, float r, float q) {
   // §2.7: target is TEXTUREi for a unit that exists; otherwise INVALID_ENUM.
   if (target < GL_TEXTURE0 || target >= GL_TEXTURE0 + kMaxTexUnits)
     return record_error(ctx, GL_INVALID_ENUM, "glMultiTexCoord", target);
-  float* tc = ctx->cur_tex[target - GL_TEXTURE0];
+  float* tc = ctx->current.tex[target - GL_TEXTURE0];
   tc[0] = s, tc[1] = t, tc[2] = r, tc[3] = q;
 }
 
 } // namespace
 
-// ---- hooks for enable.cpp, get.cpp and attrib.cpp ----
+namespace {
 
-bool* texpipe_capability(Context* ctx, GLenum cap, uint32_t* dirty) {
-  TexUnitState& u = active_unit(ctx);
-  switch (cap) {
-  case GL_TEXTURE_1D:
-    *dirty = kDirtyTexture;
-    return &u.enable_1d;
-  case GL_TEXTURE_2D:
-    *dirty = kDirtyTexture;
-    return &u.enable_2d;
-  case GL_TEXTURE_3D:
-    *dirty = kDirtyTexture;
-    return &u.enable_3d;
-  case GL_TEXTURE_CUBE_MAP:
-    *dirty = kDirtyTexture;
-    return &u.enable_cube;
-  case GL_TEXTURE_GEN_S:
-    *dirty = kDirtyTexture;
-    return &u.gen_enabled[0];
-  case GL_TEXTURE_GEN_T:
-    *dirty = kDirtyTexture;
-    return &u.gen_enabled[1];
-  case GL_TEXTURE_GEN_R:
-    *dirty = kDirtyTexture;
-    return &u.gen_enabled[2];
-  case GL_TEXTURE_GEN_Q:
-    *dirty = kDirtyTexture;
-    return &u.gen_enabled[3];
-  case GL_FOG:
-    *dirty = kDirtyFog;
-    return &ctx->texpipe.fog.enabled;
-  default:
-    return nullptr;
-  }
-}
-
-bool texpipe_get(Context* ctx, GLenum pname, int* kind, double* v, int* n) {
-  constexpr int kInt = 0, kFloat = 2, kNormalized = 3;
-  const FogState& fog = ctx->texpipe.fog;
-  *kind = kInt;
+bool get_texenv(Context& ctx, GLenum pname, QueryValues& out) {
   switch (pname) {
   case GL_ACTIVE_TEXTURE:
-    v[(*n)++] = GL_TEXTURE0 + ctx->active_texture;
-    return true;
-  case GL_CLIENT_ACTIVE_TEXTURE:
-    v[(*n)++] = GL_TEXTURE0 + ctx->client_active_texture;
+    out.ints({double(GL_TEXTURE0 + ctx.texture.active)});
     return true;
   case GL_MAX_TEXTURE_UNITS:
-    v[(*n)++] = kMaxTexUnits;
-    return true;
-  // GL 2.1 Table 6.11 (fog) and 6.5 (the current fog coordinate).
-  case GL_CURRENT_FOG_COORD:
-    *kind = kFloat, v[(*n)++] = ctx->texpipe.cur_fog_coord;
-    return true;
-  case GL_FOG_COLOR:
-    *kind = kNormalized;
-    for (float c : fog.color)
-      v[(*n)++] = c;
-    return true;
-  case GL_FOG_INDEX:
-    *kind = kFloat, v[(*n)++] = fog.index;
-    return true;
-  case GL_FOG_DENSITY:
-    *kind = kFloat, v[(*n)++] = fog.density;
-    return true;
-  case GL_FOG_START:
-    *kind = kFloat, v[(*n)++] = fog.start;
-    return true;
-  case GL_FOG_END:
-    *kind = kFloat, v[(*n)++] = fog.end;
-    return true;
-  case GL_FOG_MODE:
-    v[(*n)++] = fog.mode;
-    return true;
-  case GL_FOG_COORD_SRC:
-    v[(*n)++] = fog.coord_src;
+    out.ints({kMaxTexUnits});
     return true;
   default:
     return false;
   }
 }
 
-void texpipe_save_attrib(const Context* c, GLbitfield mask, TexPipeAttrib& f) {
-  if (mask & GL_CURRENT_BIT) f.fog_coord = c->texpipe.cur_fog_coord;
-  if (mask & GL_ENABLE_BIT) {
-    for (int i = 0; i < kMaxTexUnits; ++i) {
-      const TexUnitState& u = c->texpipe.unit[i];
-      const bool e[8] = {u.enable_1d,      u.enable_2d,      u.enable_3d,      u.enable_cube,
-                         u.gen_enabled[0], u.gen_enabled[1], u.gen_enabled[2], u.gen_enabled[3]};
-      for (int k = 0; k < 8; ++k)
-        f.enables[i][k] = e[k];
-    }
-    f.fog_enabled = c->texpipe.fog.enabled;
-  }
-  if (mask & GL_TEXTURE_BIT) {
-    for (int i = 0; i < kMaxTexUnits; ++i)
-      f.unit[i] = c->texpipe.unit[i];
-    f.active_texture = c->active_texture;
-  }
-  if (mask & GL_FOG_BIT) f.fog = c->texpipe.fog;
+// The target and coordinate-generation enables of a unit (§3.8.15, §2.11.4); Enable acts on
+// the active unit.
+constexpr Capability kTextureEnvCaps[] = {
+    {GL_TEXTURE_1D, 1, CapabilityKind::kPerUnit, kDirtyTexture,
+     [](Context& c, unsigned, unsigned u) { return &c.texture.unit[u].enable_1d; }},
+    {GL_TEXTURE_2D, 1, CapabilityKind::kPerUnit, kDirtyTexture,
+     [](Context& c, unsigned, unsigned u) { return &c.texture.unit[u].enable_2d; }},
+    {GL_TEXTURE_3D, 1, CapabilityKind::kPerUnit, kDirtyTexture,
+     [](Context& c, unsigned, unsigned u) { return &c.texture.unit[u].enable_3d; }},
+    {GL_TEXTURE_CUBE_MAP, 1, CapabilityKind::kPerUnit, kDirtyTexture,
+     [](Context& c, unsigned, unsigned u) { return &c.texture.unit[u].enable_cube; }},
+    // TEXTURE_GEN_S, T, R, Q are consecutive enums.
+    {GL_TEXTURE_GEN_S, 4, CapabilityKind::kPerUnit, kDirtyTexture,
+     [](Context& c, unsigned i, unsigned u) { return &c.texture.unit[u].gen_enabled[i]; }},
+};
+
+constexpr AttribGroup kTextureEnvGroups[] = {
+    member_group<&Context::texture>(GL_TEXTURE_BIT, kDirtyTexture),
+};
+
+// Texture objects change without the context's dirty bits (share groups): the sampler
+// snapshots are redone when the share group's generation moved.
+uint32_t texture_stale(const Context& ctx) {
+  const bool stale = ctx.texpipe.any_target_enabled &&
+                     ctx.shared->texture_generation != ctx.texpipe.seen_generation;
+  return stale ? uint32_t{kDirtyTexture} : 0u;
 }
 
-uint32_t texpipe_restore_attrib(Context* c, GLbitfield mask, const TexPipeAttrib& f) {
-  uint32_t dirty = 0;
-  if (mask & GL_CURRENT_BIT) c->texpipe.cur_fog_coord = f.fog_coord;
-  if (mask & GL_ENABLE_BIT) {
-    for (int i = 0; i < kMaxTexUnits; ++i) {
-      TexUnitState& u = c->texpipe.unit[i];
-      bool* e[8] = {&u.enable_1d,      &u.enable_2d,      &u.enable_3d,      &u.enable_cube,
-                    &u.gen_enabled[0], &u.gen_enabled[1], &u.gen_enabled[2], &u.gen_enabled[3]};
-      for (int k = 0; k < 8; ++k)
-        *e[k] = f.enables[i][k];
-    }
-    c->texpipe.fog.enabled = f.fog_enabled;
-    dirty |= kDirtyTexture | kDirtyFog;
-  }
-  if (mask & GL_TEXTURE_BIT) {
-    for (int i = 0; i < kMaxTexUnits; ++i)
-      c->texpipe.unit[i] = f.unit[i];
-    c->active_texture = f.active_texture;
-    dirty |= kDirtyTexture;
-  }
-  if (mask & GL_FOG_BIT) {
-    c->texpipe.fog = f.fog;
-    dirty |= kDirtyFog;
-  }
-  return dirty;
-}
+} // namespace
+
+const StateArea kTextureEnvArea = {
+    .name = "texture units (GL 2.1 §2.11.4, §3.8.13, §3.8.15, Tables 6.15-6.19)",
+    .capabilities = kTextureEnvCaps,
+    .get = get_texenv,
+    .groups = kTextureEnvGroups,
+    .derive_on = kDirtyTexture | kDirtyFog | kDirtyLighting | kDirtyTransform,
+    .derive = validate_texpipe,
+    .stale = texture_stale,
+};
 
 namespace exec {
 
@@ -470,7 +397,7 @@ void GLAPIENTRY ActiveTexture(GLenum texture) {
   PINEDA_CTX_OUTSIDE("glActiveTexture");
   if (texture < GL_TEXTURE0 || texture >= GL_TEXTURE0 + kMaxTexUnits)
     return record_error(ctx, GL_INVALID_ENUM, "glActiveTexture", texture);
-  ctx->active_texture = texture - GL_TEXTURE0;
+  ctx->texture.active = texture - GL_TEXTURE0;
 }
 
 // GL 2.1 §2.8: the unit whose texture coordinate array TexCoordPointer and the client state
@@ -479,7 +406,7 @@ void GLAPIENTRY ClientActiveTexture(GLenum texture) {
   PINEDA_CTX_OUTSIDE("glClientActiveTexture");
   if (texture < GL_TEXTURE0 || texture >= GL_TEXTURE0 + kMaxTexUnits)
     return record_error(ctx, GL_INVALID_ENUM, "glClientActiveTexture", texture);
-  ctx->client_active_texture = texture - GL_TEXTURE0;
+  ctx->arrays.client_active_texture = texture - GL_TEXTURE0;
 }
 
 // Texture coordinates are not normalized (GL 2.1 §2.7): integers convert directly.

@@ -4,7 +4,8 @@
 #include <glm/mat3x3.hpp>
 #include <glm/matrix.hpp>
 
-#include "core/context.h"
+#include "state/context.h"
+#include "state/texenv.h"
 #include "fragment/shade.h"
 #include "texture/sampler.h"
 
@@ -14,7 +15,7 @@ namespace {
 
 // GL 2.1 §3.8.15: of the enabled targets of a unit, cube map wins over 3D, 3D over 2D, 2D over
 // 1D. Zero when none is enabled.
-GLenum unit_target(const TexUnitState& u) {
+GLenum unit_target(const TexUnit& u) {
   if (u.enable_cube) return GL_TEXTURE_CUBE_MAP;
   if (u.enable_3d) return GL_TEXTURE_3D;
   if (u.enable_2d) return GL_TEXTURE_2D;
@@ -66,12 +67,12 @@ void setup_unit(ShadeUnit& su, const TexEnv& e, int unit, GLenum target) {
 }
 
 void setup_vertex(const Context* ctx, uint32_t units, bool fog, TexVertexSetup& vs) {
-  const TexPipeState& tp = ctx->texpipe;
+  const TextureGroup& tex = ctx->texture;
   vs.units = units;
   vs.need_eye = vs.need_normal = false;
   for (int u = 0; u < kMaxTexUnits; ++u) {
     if (!(units & (1u << u))) continue;
-    const TexUnitState& us = tp.unit[u];
+    const TexUnit& us = tex.unit[u];
     TexVertexUnit& tu = vs.unit[u];
     for (int c = 0; c < 4; ++c) {
       tu.gen[c] = us.gen_enabled[c];
@@ -87,7 +88,7 @@ void setup_vertex(const Context* ctx, uint32_t units, bool fog, TexVertexSetup& 
         vs.need_normal = true;
     }
     // §2.11.2: the coordinates are multiplied by the unit's texture matrix.
-    const glm::mat4& tm = ctx->texture[u].top();
+    const glm::mat4& tm = ctx->texture_matrix[u].top();
     tu.identity = tm == glm::mat4(1.0f);
     for (int col = 0; col < 4; ++col)
       for (int row = 0; row < 4; ++row)
@@ -95,7 +96,7 @@ void setup_vertex(const Context* ctx, uint32_t units, bool fog, TexVertexSetup& 
   }
   vs.need_eye = vs.need_eye || vs.need_normal;
   vs.fog = fog;
-  vs.fog_from_depth = fog && tp.fog.coord_src == GL_FRAGMENT_DEPTH;
+  vs.fog_from_depth = fog && ctx->fog.coord_src == GL_FRAGMENT_DEPTH;
   const glm::mat4& mv = ctx->modelview.top();
   for (int col = 0; col < 4; ++col)
     for (int row = 0; row < 4; ++row)
@@ -106,9 +107,9 @@ void setup_vertex(const Context* ctx, uint32_t units, bool fog, TexVertexSetup& 
     for (int col = 0; col < 3; ++col)
       for (int row = 0; row < 3; ++row)
         vs.normal_matrix[3 * col + row] = nm[col][row];
-    vs.normalize = ctx->normalize;
+    vs.normalize = ctx->transform.normalize;
     vs.rescale = 1.0f;
-    if (ctx->rescale_normal && !ctx->normalize) {
+    if (ctx->transform.rescale_normal && !ctx->transform.normalize) {
       // §2.11.3: f = 1 / sqrt(m31^2 + m32^2 + m33^2) of the inverse model-view.
       const glm::mat3 inv = glm::inverse(glm::mat3(mv));
       const float len =
@@ -120,18 +121,10 @@ void setup_vertex(const Context* ctx, uint32_t units, bool fog, TexVertexSetup& 
 
 } // namespace
 
-void validate_texpipe(Context* ctx, uint32_t dirty) {
-  TexPipeState& tp = ctx->texpipe;
-  RasterState& rs = ctx->raster;
-  // Texture objects change behind the context's back (other contexts of the share group, or
-  // texture commands): compare the share group's generation.
+void validate_texpipe(Context& context, uint32_t) {
+  Context* ctx = &context;
+  TexPipeDerived& tp = ctx->texpipe;
   const uint64_t generation = ctx->shared->texture_generation;
-  if (tp.any_target_enabled && generation != tp.seen_generation) dirty |= kDirtyTexture;
-  if (!(dirty & (kDirtyTexture | kDirtyFog | kDirtyLighting | kDirtyTransform))) {
-    rs.shade = tp.shading ? tp.shade.get() : nullptr;
-    rs.attr_count = tp.attr_count;
-    return;
-  }
   tp.seen_generation = generation;
   tp.any_target_enabled = false;
   if (!tp.shade) tp.shade = std::make_shared<ShadeSetup>();
@@ -140,17 +133,17 @@ void validate_texpipe(Context* ctx, uint32_t dirty) {
   uint32_t units = 0;
   for (int u = 0; u < kMaxTexUnits; ++u) {
     ss.slot_of_unit[u] = -1;
-    const GLenum target = unit_target(tp.unit[u]);
+    const GLenum target = unit_target(ctx->texture.unit[u]);
     if (target == 0) continue;
     tp.any_target_enabled = true;
     ShadeUnit& su = ss.unit[ss.unit_count];
     // §3.8.15: a unit whose texture is not complete behaves as if texturing were disabled.
     if (!make_sampler_view(*bound_texture(ctx, u, target), su.view)) continue;
-    setup_unit(su, tp.unit[u].env, u, target);
+    setup_unit(su, ctx->texture.unit[u].env, u, target);
     ss.slot_of_unit[u] = ss.unit_count++;
     units |= 1u << u;
   }
-  const FogState& fog = tp.fog;
+  const FogGroup& fog = ctx->fog;
   ss.fog = fog.enabled;
   ss.fog_mode = fog.mode;
   for (int k = 0; k < 4; ++k)
@@ -165,13 +158,12 @@ void validate_texpipe(Context* ctx, uint32_t dirty) {
   // fixed-function vertex program (ffvertex_prog.c build_fog) outputs only the coordinate and
   // the fragment shader evaluates f (st_nir_lower_fog). DONT_CARE follows llvmpipe, FASTEST
   // the classic path.
-  ss.fog_per_vertex = fog.enabled && ctx->hint_fog == GL_FASTEST;
-  const LightingState& ls = ctx->lighting;
+  ss.fog_per_vertex = fog.enabled && ctx->hint.fog == GL_FASTEST;
+  const LightingGroup& ls = ctx->lighting;
   // §3.9: with lighting the sum applies when the specular colour is separate; otherwise
   // COLOR_SUM decides.
-  ss.color_sum = ls.enabled ? ls.setup.separate_specular : ls.color_sum;
+  ss.color_sum = ls.enabled ? ctx->light_setup.separate_specular : ctx->fog.color_sum;
   tp.shading = ss.unit_count != 0 || ss.fog;
-  rs.shade = tp.shading ? &ss : nullptr;
   setup_vertex(ctx, units, ss.fog, tp.vertex);
   TexVertexSetup& vs = tp.vertex;
   vs.fog_per_vertex = ss.fog_per_vertex;
@@ -187,7 +179,6 @@ void validate_texpipe(Context* ctx, uint32_t dirty) {
     if (units & (1u << u)) count = kAttrTex0 + 4 * (u + 1);
   if (ss.fog) count = kAttrFog + 1;
   tp.attr_count = count;
-  rs.attr_count = count;
 }
 
 } // namespace pineda

@@ -1,13 +1,15 @@
 // Vertex arrays (GL 2.1 §2.8): array pointers, glArrayElement, the Draw* commands,
-// glInterleavedArrays, and the client attribute stack (§6.1.14).
+// glInterleavedArrays; and the vertex-array area (Tables 6.6-6.9, varray.h): client
+// capabilities, queries, pointers and the client vertex-array group.
 #include <algorithm>
 #include <cstdint>
 #include <cstring>
 
-#include "core/api_util.h"
+#include "state/api_util.h"
 #include "dispatch.h"
-#include "geometry/fetch.h"
-#include "geometry/geometry.h"
+#include "state/area.h"
+#include "state/fetch.h"
+#include "state/draw_call.h"
 
 namespace pineda {
 
@@ -24,7 +26,7 @@ void set_pointer(const char* func, ClientArray& a, GLint size, GLenum type, GLsi
   a.type = type;
   a.stride = stride;
   a.pointer = ptr;
-  a.buffer = ctx->array_buffer;
+  a.buffer = ctx->arrays.array_buffer;
 }
 
 bool type_in(GLenum type, std::initializer_list<GLenum> allowed) {
@@ -38,7 +40,7 @@ bool arrays_mapped(Context* ctx, bool with_elements) {
     auto it = ctx->buffers.find(name);
     return it != ctx->buffers.end() && it->second->mapped;
   };
-  const VertexArrays& a = ctx->arrays;
+  const VertexArrayGroup& a = ctx->arrays;
   if ((a.vertex.enabled && mapped(a.vertex.buffer)) ||
       (a.color.enabled && mapped(a.color.buffer)) ||
       (a.normal.enabled && mapped(a.normal.buffer)) ||
@@ -50,7 +52,7 @@ bool arrays_mapped(Context* ctx, bool with_elements) {
       (a.edgeflag.enabled && mapped(a.edgeflag.buffer)) ||
       (a.secondary.enabled && mapped(a.secondary.buffer)))
     return true;
-  return with_elements && mapped(ctx->element_array_buffer);
+  return with_elements && mapped(ctx->arrays.element_array_buffer);
 }
 
 // Draw elements [first, first+count) of the enabled arrays.
@@ -68,8 +70,8 @@ void draw_range(Context* ctx, GLenum mode, size_t first, size_t count) {
 bool read_indices(Context* ctx, GLsizei count, GLenum type, const void* indices) {
   const uint8_t* src = static_cast<const uint8_t*>(indices);
   const size_t bytes = static_cast<size_t>(count) * type_size(type);
-  if (ctx->element_array_buffer != 0) {
-    auto it = ctx->buffers.find(ctx->element_array_buffer);
+  if (ctx->arrays.element_array_buffer != 0) {
+    auto it = ctx->buffers.find(ctx->arrays.element_array_buffer);
     if (it == ctx->buffers.end()) return false;
     const size_t offset = reinterpret_cast<uintptr_t>(indices);
     if (offset > it->second->data.size() || bytes > it->second->data.size() - offset) return false;
@@ -143,7 +145,187 @@ bool check_elements(Context* ctx, const char* func, GLenum mode, GLsizei count, 
   return true;
 }
 
+ClientArray* array_for(Context& ctx, GLenum pname) {
+  switch (pname) {
+  case GL_VERTEX_ARRAY_SIZE:
+  case GL_VERTEX_ARRAY_TYPE:
+  case GL_VERTEX_ARRAY_STRIDE:
+  case GL_VERTEX_ARRAY_BUFFER_BINDING:
+  case GL_VERTEX_ARRAY_COUNT_EXT:
+    return &ctx.arrays.vertex;
+  case GL_COLOR_ARRAY_SIZE:
+  case GL_COLOR_ARRAY_TYPE:
+  case GL_COLOR_ARRAY_STRIDE:
+  case GL_COLOR_ARRAY_BUFFER_BINDING:
+  case GL_COLOR_ARRAY_COUNT_EXT:
+    return &ctx.arrays.color;
+  case GL_NORMAL_ARRAY_TYPE:
+  case GL_NORMAL_ARRAY_STRIDE:
+  case GL_NORMAL_ARRAY_BUFFER_BINDING:
+  case GL_NORMAL_ARRAY_COUNT_EXT:
+    return &ctx.arrays.normal;
+  case GL_TEXTURE_COORD_ARRAY_SIZE:
+  case GL_TEXTURE_COORD_ARRAY_TYPE:
+  case GL_TEXTURE_COORD_ARRAY_STRIDE:
+  case GL_TEXTURE_COORD_ARRAY_BUFFER_BINDING:
+  case GL_TEXTURE_COORD_ARRAY_COUNT_EXT:
+    return &ctx.arrays.texcoord[ctx.arrays.client_active_texture];
+  case GL_EDGE_FLAG_ARRAY_STRIDE:
+  case GL_EDGE_FLAG_ARRAY_BUFFER_BINDING:
+  case GL_EDGE_FLAG_ARRAY_COUNT_EXT:
+    return &ctx.arrays.edgeflag;
+  case GL_SECONDARY_COLOR_ARRAY_SIZE:
+  case GL_SECONDARY_COLOR_ARRAY_TYPE:
+  case GL_SECONDARY_COLOR_ARRAY_STRIDE:
+  case GL_SECONDARY_COLOR_ARRAY_BUFFER_BINDING:
+    return &ctx.arrays.secondary;
+  case GL_FOG_COORD_ARRAY_TYPE:
+  case GL_FOG_COORD_ARRAY_STRIDE:
+  case GL_FOG_COORD_ARRAY_BUFFER_BINDING:
+    return &ctx.arrays.fog;
+  case GL_INDEX_ARRAY_TYPE:
+  case GL_INDEX_ARRAY_STRIDE:
+  case GL_INDEX_ARRAY_BUFFER_BINDING:
+  case GL_INDEX_ARRAY_COUNT_EXT:
+    return &ctx.arrays.index;
+  default:
+    return nullptr;
+  }
+}
+
+// Tables 6.6-6.9 and the *_ARRAY_COUNT_EXT queries of EXT_vertex_array ("New State").
+bool get_arrays(Context& ctx, GLenum pname, QueryValues& out) {
+  if (const ClientArray* a = array_for(ctx, pname)) {
+    switch (pname) {
+    case GL_VERTEX_ARRAY_SIZE:
+    case GL_COLOR_ARRAY_SIZE:
+    case GL_TEXTURE_COORD_ARRAY_SIZE:
+    case GL_SECONDARY_COLOR_ARRAY_SIZE:
+      out.ints({double(a->size)});
+      return true;
+    case GL_VERTEX_ARRAY_TYPE:
+    case GL_COLOR_ARRAY_TYPE:
+    case GL_NORMAL_ARRAY_TYPE:
+    case GL_TEXTURE_COORD_ARRAY_TYPE:
+    case GL_SECONDARY_COLOR_ARRAY_TYPE:
+    case GL_FOG_COORD_ARRAY_TYPE:
+    case GL_INDEX_ARRAY_TYPE:
+      out.ints({double(a->type)});
+      return true;
+    case GL_VERTEX_ARRAY_STRIDE:
+    case GL_COLOR_ARRAY_STRIDE:
+    case GL_NORMAL_ARRAY_STRIDE:
+    case GL_TEXTURE_COORD_ARRAY_STRIDE:
+    case GL_EDGE_FLAG_ARRAY_STRIDE:
+    case GL_SECONDARY_COLOR_ARRAY_STRIDE:
+    case GL_FOG_COORD_ARRAY_STRIDE:
+    case GL_INDEX_ARRAY_STRIDE:
+      out.ints({double(a->stride)});
+      return true;
+    case GL_VERTEX_ARRAY_COUNT_EXT:
+    case GL_NORMAL_ARRAY_COUNT_EXT:
+    case GL_COLOR_ARRAY_COUNT_EXT:
+    case GL_INDEX_ARRAY_COUNT_EXT:
+    case GL_TEXTURE_COORD_ARRAY_COUNT_EXT:
+    case GL_EDGE_FLAG_ARRAY_COUNT_EXT:
+      out.ints({double(a->count_ext)});
+      return true;
+    default:
+      out.ints({double(a->buffer)});
+      return true;
+    }
+  }
+  switch (pname) {
+  case GL_CLIENT_ACTIVE_TEXTURE:
+    out.ints({double(GL_TEXTURE0 + ctx.arrays.client_active_texture)});
+    return true;
+  case GL_ARRAY_BUFFER_BINDING:
+    out.ints({double(ctx.arrays.array_buffer)});
+    return true;
+  case GL_ELEMENT_ARRAY_BUFFER_BINDING:
+    out.ints({double(ctx.arrays.element_array_buffer)});
+    return true;
+  // GL 1.2 DrawRangeElements recommendations.
+  case GL_MAX_ELEMENTS_VERTICES:
+  case GL_MAX_ELEMENTS_INDICES:
+    out.ints({kMaxElementsVertices});
+    return true;
+  default:
+    return false;
+  }
+}
+
+bool get_array_pointer(Context& ctx, GLenum pname, void** out) {
+  const VertexArrayGroup& a = ctx.arrays;
+  const void* p = nullptr;
+  switch (pname) {
+  case GL_VERTEX_ARRAY_POINTER:
+    p = a.vertex.pointer;
+    break;
+  case GL_COLOR_ARRAY_POINTER:
+    p = a.color.pointer;
+    break;
+  case GL_NORMAL_ARRAY_POINTER:
+    p = a.normal.pointer;
+    break;
+  case GL_TEXTURE_COORD_ARRAY_POINTER:
+    p = a.texcoord[a.client_active_texture].pointer;
+    break;
+  case GL_EDGE_FLAG_ARRAY_POINTER:
+    p = a.edgeflag.pointer;
+    break;
+  case GL_SECONDARY_COLOR_ARRAY_POINTER:
+    p = a.secondary.pointer;
+    break;
+  case GL_FOG_COORD_ARRAY_POINTER:
+    p = a.fog.pointer;
+    break;
+  case GL_INDEX_ARRAY_POINTER:
+    p = a.index.pointer;
+    break;
+  default:
+    return false;
+  }
+  *out = const_cast<void*>(p);
+  return true;
+}
+
+// EnableClientState (§2.8); Enable takes them too (enable.cpp). The texture coordinate array
+// is the client active unit's.
+constexpr Capability kArrayCaps[] = {
+    {GL_VERTEX_ARRAY, 1, CapabilityKind::kClient, 0,
+     [](Context& c, unsigned, unsigned) { return &c.arrays.vertex.enabled; }},
+    {GL_NORMAL_ARRAY, 1, CapabilityKind::kClient, 0,
+     [](Context& c, unsigned, unsigned) { return &c.arrays.normal.enabled; }},
+    {GL_COLOR_ARRAY, 1, CapabilityKind::kClient, 0,
+     [](Context& c, unsigned, unsigned) { return &c.arrays.color.enabled; }},
+    {GL_INDEX_ARRAY, 1, CapabilityKind::kClient, 0,
+     [](Context& c, unsigned, unsigned) { return &c.arrays.index.enabled; }},
+    {GL_TEXTURE_COORD_ARRAY, 1, CapabilityKind::kClient, 0,
+     [](Context& c, unsigned, unsigned) {
+       return &c.arrays.texcoord[c.arrays.client_active_texture].enabled;
+     }},
+    {GL_EDGE_FLAG_ARRAY, 1, CapabilityKind::kClient, 0,
+     [](Context& c, unsigned, unsigned) { return &c.arrays.edgeflag.enabled; }},
+    {GL_SECONDARY_COLOR_ARRAY, 1, CapabilityKind::kClient, 0,
+     [](Context& c, unsigned, unsigned) { return &c.arrays.secondary.enabled; }},
+    {GL_FOG_COORD_ARRAY, 1, CapabilityKind::kClient, 0,
+     [](Context& c, unsigned, unsigned) { return &c.arrays.fog.enabled; }},
+};
+
+constexpr AttribGroup kArrayGroups[] = {
+    member_group<&Context::arrays>(GL_CLIENT_VERTEX_ARRAY_BIT, 0, true),
+};
+
 } // namespace
+
+const StateArea kVertexArrayArea = {
+    .name = "vertex arrays and buffer objects (GL 2.1 §2.8, §2.9, Tables 6.6-6.9)",
+    .capabilities = kArrayCaps,
+    .get = get_arrays,
+    .get_pointer = get_array_pointer,
+    .groups = kArrayGroups,
+};
 
 namespace exec {
 
@@ -200,8 +382,8 @@ void GLAPIENTRY TexCoordPointer(GLint size, GLenum type, GLsizei stride, const v
     return record_error(ctx, GL_INVALID_VALUE, "glTexCoordPointer");
   if (!type_in(type, {GL_SHORT, GL_INT, GL_FLOAT, GL_DOUBLE}))
     return record_error(ctx, GL_INVALID_ENUM, "glTexCoordPointer", type);
-  set_pointer("glTexCoordPointer", ctx->arrays.texcoord[ctx->client_active_texture], size, type,
-              stride, ptr, ctx);
+  set_pointer("glTexCoordPointer", ctx->arrays.texcoord[ctx->arrays.client_active_texture], size,
+              type, stride, ptr, ctx);
 }
 
 void GLAPIENTRY EdgeFlagPointer(GLsizei stride, const void* ptr) {
@@ -218,18 +400,18 @@ void GLAPIENTRY ArrayElement(GLint i) {
   if (i < 0) return record_error(ctx, GL_INVALID_VALUE, "glArrayElement");
   InputVertex v;
   if (!fetch_range(ctx, static_cast<size_t>(i), 1, &v)) return;
-  const VertexArrays& a = ctx->arrays;
+  const VertexArrayGroup& a = ctx->arrays;
   if (a.color.enabled) {
-    std::copy(v.color, v.color + 4, ctx->cur_color);
+    std::copy(v.color, v.color + 4, ctx->current.color);
     if (ctx->lighting.color_material) update_color_material(ctx); // as Color does (§2.14.3)
   }
-  if (a.secondary.enabled) std::copy(v.color2, v.color2 + 3, ctx->cur_color2);
-  if (a.normal.enabled) std::copy(v.normal, v.normal + 3, ctx->cur_normal);
+  if (a.secondary.enabled) std::copy(v.color2, v.color2 + 3, ctx->current.color2);
+  if (a.normal.enabled) std::copy(v.normal, v.normal + 3, ctx->current.normal);
   for (int u = 0; u < kMaxTexUnits; ++u)
-    if (a.texcoord[u].enabled) std::copy(v.tex[u], v.tex[u] + 4, ctx->cur_tex[u]);
-  if (a.fog.enabled) ctx->texpipe.cur_fog_coord = v.fog;
-  if (a.edgeflag.enabled) ctx->cur_edge = v.edge != 0;
-  if (a.vertex.enabled && ctx->begin_mode != kOutsideBeginEnd) ctx->imm.push_back(v);
+    if (a.texcoord[u].enabled) std::copy(v.tex[u], v.tex[u] + 4, ctx->current.tex[u]);
+  if (a.fog.enabled) ctx->current.fog_coord = v.fog;
+  if (a.edgeflag.enabled) ctx->current.edge = v.edge != 0;
+  if (a.vertex.enabled && ctx->imm.mode != kOutsideBeginEnd) ctx->imm.verts.push_back(v);
 }
 
 void GLAPIENTRY DrawArrays(GLenum mode, GLint first, GLsizei count) {
@@ -325,8 +507,8 @@ void GLAPIENTRY InterleavedArrays(GLenum format, GLsizei stride, const void* poi
     return reinterpret_cast<const void*>(reinterpret_cast<uintptr_t>(pointer) +
                                          static_cast<uintptr_t>(offset));
   };
-  VertexArrays& a = ctx->arrays;
-  ClientArray& tex = a.texcoord[ctx->client_active_texture];
+  VertexArrayGroup& a = ctx->arrays;
+  ClientArray& tex = a.texcoord[ctx->arrays.client_active_texture];
   a.edgeflag.enabled = false;
   a.index.enabled = false;
   a.fog.enabled = false;
@@ -339,39 +521,6 @@ void GLAPIENTRY InterleavedArrays(GLenum format, GLsizei stride, const void* poi
   if (has_normal) set_pointer("glInterleavedArrays", a.normal, 3, GL_FLOAT, s, field(l->pn), ctx);
   a.vertex.enabled = true;
   set_pointer("glInterleavedArrays", a.vertex, l->sv, GL_FLOAT, s, field(l->pv), ctx);
-}
-
-void GLAPIENTRY PushClientAttrib(GLbitfield mask) {
-  PINEDA_CTX_OUTSIDE("glPushClientAttrib");
-  if (ctx->client_attrib_stack.size() >= kClientAttribStackDepth)
-    return record_error(ctx, GL_STACK_OVERFLOW, "glPushClientAttrib");
-  ClientAttribFrame f;
-  f.mask = mask;
-  f.pack = ctx->pack;
-  f.unpack = ctx->unpack;
-  f.arrays = ctx->arrays;
-  f.array_buffer = ctx->array_buffer;
-  f.element_array_buffer = ctx->element_array_buffer;
-  f.client_active_texture = ctx->client_active_texture;
-  ctx->client_attrib_stack.push_back(f);
-}
-
-void GLAPIENTRY PopClientAttrib() {
-  PINEDA_CTX_OUTSIDE("glPopClientAttrib");
-  if (ctx->client_attrib_stack.empty())
-    return record_error(ctx, GL_STACK_UNDERFLOW, "glPopClientAttrib");
-  const ClientAttribFrame& f = ctx->client_attrib_stack.back();
-  if (f.mask & GL_CLIENT_PIXEL_STORE_BIT) {
-    ctx->pack = f.pack;
-    ctx->unpack = f.unpack;
-  }
-  if (f.mask & GL_CLIENT_VERTEX_ARRAY_BIT) {
-    ctx->arrays = f.arrays;
-    ctx->array_buffer = f.array_buffer;
-    ctx->element_array_buffer = f.element_array_buffer;
-    ctx->client_active_texture = f.client_active_texture;
-  }
-  ctx->client_attrib_stack.pop_back();
 }
 
 } // namespace exec

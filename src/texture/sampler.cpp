@@ -1,6 +1,7 @@
-// The texture sampler (GL 2.1 §3.8.8-§3.8.10, §3.8.14): completeness, level of detail, level
-// selection, wrap modes, borders, NEAREST/LINEAR filtering, mipmap interpolation, cube face
-// selection and depth comparison.
+// The texture sampler (GL 2.1 §3.8.8-§3.8.10, §3.8.14): level of detail, level selection,
+// wrap modes, borders, NEAREST/LINEAR filtering, mipmap interpolation, cube face selection and
+// depth comparison, on the plain SamplerView the texture objects' completeness check makes
+// (state/texture_view.cpp); and the mipmap filter of GENERATE_MIPMAP.
 //
 // Where the spec leaves room Pineda does what Mesa llvmpipe does:
 //  - the minification/magnification switch-over point c is 0 for every filter combination
@@ -20,163 +21,11 @@
 #include <emmintrin.h>
 #endif
 
-#include "fragment/simd.h"
-#include "texture/tex_image.h"
-#include "texture/texture_object.h"
+#include "core/simd.h"
 
 namespace pineda {
 
 namespace {
-
-bool is_mipmap_filter(GLenum f) {
-  return f != GL_NEAREST && f != GL_LINEAR;
-}
-
-// Whether a level sequence matches the base level's format and border (§3.8.10).
-bool same_format(const TexImage& a, const TexImage& b) {
-  return a.is_depth == b.is_depth && a.base == b.base && a.border == b.border &&
-         a.red_size == b.red_size && a.green_size == b.green_size && a.blue_size == b.blue_size &&
-         a.alpha_size == b.alpha_size && a.luminance_size == b.luminance_size &&
-         a.intensity_size == b.intensity_size && a.depth_size == b.depth_size;
-}
-
-int dims_of(GLenum target) {
-  switch (target) {
-  case GL_TEXTURE_1D:
-    return 1;
-  case GL_TEXTURE_3D:
-    return 3;
-  default:
-    return 2;
-  }
-}
-
-// Mipmap completeness of one face (§3.8.10): levels base..q present with the halved sizes.
-// Returns q, or -1 when incomplete.
-int complete_levels(const TextureObject& tex, int face, int dims, bool mipmapped) {
-  const TexParams& p = tex.params;
-  const int base = p.base_level;
-  if (base < 0 || base >= kMaxTexLevels || p.max_level < base) return -1;
-  const TexImage& b = tex.images[face][base];
-  int w = b.width - 2 * b.border;
-  int h = dims >= 2 ? b.height - 2 * b.border : 1;
-  int d = dims >= 3 ? b.depth - 2 * b.border : 1;
-  if (b.width == 0 || w <= 0 || h <= 0 || d <= 0) return -1;
-  if (!mipmapped) return base;
-  int largest = std::max(w, std::max(h, d));
-  int p_levels = 0;
-  while (largest > 1)
-    largest >>= 1, ++p_levels;
-  const int q = std::min({base + p_levels, p.max_level, kMaxTexLevels - 1});
-  for (int level = base + 1; level <= q; ++level) {
-    w = std::max(1, w / 2), h = std::max(1, h / 2), d = std::max(1, d / 2);
-    const TexImage& im = tex.images[face][level];
-    if (!same_format(im, b)) return -1;
-    if (im.width - 2 * im.border != w) return -1;
-    if (dims >= 2 && im.height - 2 * im.border != h) return -1;
-    if (dims >= 3 && im.depth - 2 * im.border != d) return -1;
-  }
-  // Levels past the largest computed size are not needed when max_level is above p.
-  return q;
-}
-
-void expand_border(TexBase base, bool depth, const float* c, float* out) {
-  const float r = std::clamp(c[0], 0.0f, 1.0f), g = std::clamp(c[1], 0.0f, 1.0f);
-  const float b = std::clamp(c[2], 0.0f, 1.0f), a = std::clamp(c[3], 0.0f, 1.0f);
-  if (depth) { // the depth value is the border colour's first component; expanded later
-    out[0] = out[1] = out[2] = out[3] = r;
-    return;
-  }
-  switch (base) {
-  case TexBase::Alpha:
-    out[0] = out[1] = out[2] = 0.0f, out[3] = a;
-    break;
-  case TexBase::Luminance:
-    out[0] = out[1] = out[2] = r, out[3] = 1.0f;
-    break;
-  case TexBase::LuminanceAlpha:
-    out[0] = out[1] = out[2] = r, out[3] = a;
-    break;
-  case TexBase::Intensity:
-    out[0] = out[1] = out[2] = out[3] = r;
-    break;
-  case TexBase::RGB:
-    out[0] = r, out[1] = g, out[2] = b, out[3] = 1.0f;
-    break;
-  case TexBase::RGBA:
-    out[0] = r, out[1] = g, out[2] = b, out[3] = a;
-    break;
-  }
-}
-
-} // namespace
-
-bool make_sampler_view(const TextureObject& tex, SamplerView& out) {
-  out = SamplerView{};
-  const GLenum target = tex.target == 0 ? GL_TEXTURE_2D : tex.target;
-  const int dims = dims_of(target);
-  const TexParams& p = tex.params;
-  const bool mipmapped = is_mipmap_filter(p.min_filter);
-  const int faces = target == GL_TEXTURE_CUBE_MAP ? 6 : 1;
-  int q = -1;
-  for (int f = 0; f < faces; ++f) {
-    const int qf = complete_levels(tex, f, dims, mipmapped);
-    if (qf < 0) return false;
-    q = qf;
-  }
-  const TexImage& b = tex.images[0][p.base_level];
-  if (faces == 6) { // cube completeness: square base images of one size and format
-    for (int f = 0; f < 6; ++f) {
-      const TexImage& im = tex.images[f][p.base_level];
-      if (im.width != im.height || im.width != b.width || !same_format(im, b)) return false;
-    }
-  }
-  out.target = target;
-  out.is_depth = b.is_depth;
-  if (b.is_depth) {
-    out.base = p.depth_mode == GL_INTENSITY ? TexBase::Intensity
-               : p.depth_mode == GL_ALPHA   ? TexBase::Alpha
-                                            : TexBase::Luminance;
-  } else {
-    out.base = b.base;
-  }
-  out.border = b.border;
-  out.width = b.width - 2 * b.border;
-  out.height = dims >= 2 ? b.height - 2 * b.border : 1;
-  out.depth = dims >= 3 ? b.depth - 2 * b.border : 1;
-  out.base_level = p.base_level;
-  out.max_level = q;
-  out.faces = faces;
-  for (int f = 0; f < faces; ++f) {
-    for (int l = p.base_level; l <= q; ++l) {
-      const TexImage& im = tex.images[f][l];
-      SamplerLevel& sl = out.levels[f][l];
-      sl.rgba = im.rgba.empty() ? nullptr : im.rgba.data();
-      sl.z = im.z.empty() ? nullptr : im.z.data();
-      sl.width = im.width;
-      sl.height = dims >= 2 ? im.height : 1;
-      sl.depth = dims >= 3 ? im.depth : 1;
-    }
-  }
-  out.min_filter = p.min_filter;
-  out.mag_filter = p.mag_filter;
-  out.wrap_s = p.wrap_s;
-  out.wrap_t = p.wrap_t;
-  out.wrap_r = p.wrap_r;
-  expand_border(out.base, b.is_depth, p.border_color, out.border_color);
-  out.min_lod = p.min_lod;
-  out.max_lod = p.max_lod;
-  out.lod_bias = p.lod_bias;
-  out.c = 0.0f;
-  out.compare = b.is_depth && p.compare_mode == GL_COMPARE_R_TO_TEXTURE;
-  out.compare_func = p.compare_func;
-  out.quads = quad_sampling_supported(out);
-  return true;
-}
-
-namespace {
-
-constexpr float kMaxLodBias = 16.0f; // MAX_TEXTURE_LOD_BIAS
 
 // The two texels and weight of one axis for LINEAR, or the texel for NEAREST (i0), after the
 // wrap mode (GL 2.1 §3.8.8 eq. 3.20-3.26). Indices lie in [-1, size]; those outside
@@ -622,7 +471,7 @@ void sample_2d_fixed(const SamplerView& v, int n, const float* s, const float* t
 
 void sample_texture(const SamplerView& v, int n, const float* s, const float* t, const float* r,
                     const float* lambda, float bias, float (*rgba)[4]) {
-  const int dims = dims_of(v.target);
+  const int dims = texture_dims(v.target);
   const bool cube = v.target == GL_TEXTURE_CUBE_MAP;
   const bool simple_s = v.wrap_s == GL_REPEAT || v.wrap_s == GL_CLAMP_TO_EDGE;
   const bool simple_t = dims < 2 || v.wrap_t == GL_REPEAT || v.wrap_t == GL_CLAMP_TO_EDGE;
@@ -705,12 +554,11 @@ void sample_texture(const SamplerView& v, int n, const float* s, const float* t,
   }
 }
 
-void downsample_image(const TexImage& src, TexImage& dst, int dims) {
+void downsample_texels(const TexelImage& src, const TexelImage& dst, int dims) {
   const int b = src.border;
   const int bj = dims >= 2 ? b : 0, bk = dims >= 3 ? b : 0;
   const int sw = src.width - 2 * b, sh = src.height - 2 * bj, sd = src.depth - 2 * bk;
   const int dw = dst.width - 2 * b, dh = dst.height - 2 * bj, dd = dst.depth - 2 * bk;
-  const size_t count = size_t(dst.width) * size_t(dst.height) * size_t(dst.depth);
   auto src_index = [&](int i, int j, int k) {
     return (size_t(k + bk) * size_t(src.height) + size_t(j + bj)) * size_t(src.width) +
            size_t(i + b);
@@ -721,10 +569,6 @@ void downsample_image(const TexImage& src, TexImage& dst, int dims) {
     if (i >= dsize) return Axis{ssize, ssize, 0.0f, 0};
     return axis_linear_fixed((float(i) + 0.5f) / float(dsize), ssize, GL_CLAMP_TO_EDGE);
   };
-  if (src.is_depth)
-    dst.z.assign(count, 0.0f);
-  else
-    dst.rgba.assign(count * 4, 0);
   size_t o = 0;
   for (int k = -bk; k < dd + bk; ++k) {
     const Axis ak = dims >= 3 ? axis(k, dd, sd) : Axis{0, 0, 0.0f, 0};
@@ -743,7 +587,7 @@ void downsample_image(const TexImage& src, TexImage& dst, int dims) {
                 acc += wi * wj * wk *
                        src.z[src_index(ii ? ai.i1 : ai.i0, jj ? aj.i1 : aj.i0, kk ? ak.i1 : ak.i0)];
               }
-          dst.z[o] = acc;
+          dst.z_out[o] = acc;
           continue;
         }
         int res[2][4] = {};
@@ -759,7 +603,7 @@ void downsample_image(const TexImage& src, TexImage& dst, int dims) {
           }
         }
         for (int q = 0; q < 4; ++q)
-          dst.rgba[o * 4 + q] =
+          dst.rgba_out[o * 4 + q] =
               static_cast<uint8_t>(dims >= 3 ? lerp8(res[0][q], res[1][q], ak.w8) : res[0][q]);
       }
     }

@@ -1,30 +1,28 @@
-// The texture sampler (GL 2.1 §3.8.8-§3.8.10, §3.8.14): a per-draw snapshot of a texture object
-// (SamplerView) and the filtering of up to 64 fragments at a time. The fragment texturing path
-// (texture environments, coordinates) lives elsewhere and calls only what this header declares.
+// The texture sampler (GL 2.1 §3.8.8-§3.8.10, §3.8.14), the back end of texturing: a per-draw
+// snapshot of a texture object (SamplerView, made by state/texture_view.cpp) and the filtering
+// of up to 64 fragments at a time. It sees no GL object: the texture objects are state
+// (state/texture_object.h). The fragment texturing path (texture environments, coordinates)
+// lives elsewhere and calls only what this header declares.
 #pragma once
 
 #include <GL/gl.h>
 
 #include <cstdint>
+#include "core/limits.h"
 
 namespace pineda {
-
-struct Context;
-struct TextureObject;
-struct TexImage;
 
 // The base internal format of a texture as the sampler sees it (GL 2.1 Table 3.15). Depth
 // textures appear as the base DEPTH_TEXTURE_MODE selects (§3.8.14).
 enum class TexBase : uint8_t { Alpha, Luminance, LuminanceAlpha, Intensity, RGB, RGBA };
 
-constexpr int kMaxTexLevels = 12;   // 2048 = 2^11: levels 0..11
-constexpr int kMax3DTexLevels = 12; // 2048, as llvmpipe
-constexpr int kMaxTextureSize = 1 << (kMaxTexLevels - 1);
-constexpr int kMax3DTextureSize = 1 << (kMax3DTexLevels - 1);
-constexpr int kMaxCubeTextureSize = kMaxTextureSize;
 constexpr int kMaxSampleBatch = 64;
-// The largest texel store of one image (4 bytes per texel); larger images are OUT_OF_MEMORY.
-constexpr uint64_t kMaxTextureImageBytes = uint64_t(1) << 30;
+
+// The dimensionality of a texture target: 1 for TEXTURE_1D, 3 for TEXTURE_3D, else 2 (2D and
+// cube maps, whose faces are 2D images).
+inline int texture_dims(GLenum target) {
+  return target == GL_TEXTURE_1D ? 1 : target == GL_TEXTURE_3D ? 3 : 2;
+}
 
 // One mipmap level of one face as the sampler reads it. Sizes include the border.
 struct SamplerLevel {
@@ -59,12 +57,6 @@ struct SamplerView {
   bool quads = false; // sample_quads has a vector path for this view (quad_sampling_supported)
 };
 
-// Snapshot of `tex` for one draw; false when `tex` is not complete (§3.8.10), in which case the
-// unit behaves as if texturing were disabled for it (§3.8.15). For depth textures, `base` is the
-// one DEPTH_TEXTURE_MODE selects (Luminance, Intensity or Alpha). The view points into `tex`'s
-// images: it stays valid until the next change of SharedObjects::texture_generation.
-bool make_sampler_view(const TextureObject& tex, SamplerView& out);
-
 // Samples n <= 64 fragments. s, t, r: coordinates already divided by q (cube maps: the
 // direction (s,t,r) before face selection, §3.8.6). lambda: log2 of the scale factor rho
 // (§3.8.8) before any bias; `bias` is the texture unit's TEXTURE_LOD_BIAS (glTexEnv), the
@@ -88,8 +80,22 @@ bool quad_sampling_supported(const SamplerView& v);
 void sample_quads(const SamplerView& v, int nq, const float* s, const float* t, const float* lambda,
                   float bias, float (*rgba)[64]);
 
-// The object bound to `target` (GL_TEXTURE_1D/2D/3D/CUBE_MAP) of texture unit `unit` (default
-// object when 0 is bound); never null.
-const TextureObject* bound_texture(const Context* ctx, int unit, GLenum target);
+// One texture image as the mipmap filter reads or writes it: sizes include the border;
+// colour images have `rgba` (4 bytes per texel, expanded by base format), depth images `z`.
+// A destination has the texel storage to write (rgba_out or z_out) instead.
+struct TexelImage {
+  int width = 0, height = 0, depth = 0, border = 0;
+  bool is_depth = false;
+  const uint8_t* rgba = nullptr;
+  const float* z = nullptr;
+  uint8_t* rgba_out = nullptr;
+  float* z_out = nullptr;
+};
+
+// The next level of GENERATE_MIPMAP (GL 2.1 §3.8.8): each texel of `dst` is the bilinear
+// (trilinear for 3D) sample of `src` at the texel's centre with CLAMP_TO_EDGE, in llvmpipe's
+// 8-bit fixed point, which for halved power-of-two sizes is the 2x2 (2x2x2) box filter. Border
+// texels come from the source border. `dims` is 1, 2 or 3.
+void downsample_texels(const TexelImage& src, const TexelImage& dst, int dims);
 
 } // namespace pineda

@@ -26,8 +26,6 @@ namespace pineda {
 
 namespace {
 
-constexpr float kMaxLodBias = 16.0f; // MAX_TEXTURE_LOD_BIAS, as sampler.cpp
-
 bool is_pot(int v) {
   return v > 0 && (v & (v - 1)) == 0;
 }

@@ -16,6 +16,7 @@
 #include <vector>
 
 #include "../unit/backend/raster_test_util.h"
+#include "geometry/assemble.h"
 #include "geometry/clip.h"
 #include "geometry/cull.h"
 
@@ -31,7 +32,8 @@ ClipSetup make_setup(uint32_t user_mask, std::mt19937& rng) {
   rs.user_clip_mask = user_mask;
   std::uniform_real_distribution<float> u(-1.0f, 1.0f);
   for (int i = 0; i < 6; ++i)
-    for (int k = 0; k < 4; ++k) rs.user_planes[i][k] = u(rng);
+    for (int k = 0; k < 4; ++k)
+      rs.user_planes[i][k] = u(rng);
   ClipSetup cs;
   init_clip_setup(cs, rs);
   return cs;
@@ -67,10 +69,14 @@ float wild(std::mt19937& rng) {
 
 float wild_w(std::mt19937& rng) {
   switch (rng() % 6) {
-  case 0: return 0.0f;
-  case 1: return std::numeric_limits<float>::denorm_min() * static_cast<float>(1 + rng() % 1000);
-  case 2: return ((rng() & 1) ? 1.0f : -1.0f) * std::pow(10.0f, -static_cast<float>(rng() % 38));
-  default: return wild(rng);
+  case 0:
+    return 0.0f;
+  case 1:
+    return std::numeric_limits<float>::denorm_min() * static_cast<float>(1 + rng() % 1000);
+  case 2:
+    return ((rng() & 1) ? 1.0f : -1.0f) * std::pow(10.0f, -static_cast<float>(rng() % 38));
+  default:
+    return wild(rng);
   }
 }
 
@@ -84,7 +90,8 @@ void expect_rasterizable(const ClipSetup& cs, uint32_t planes, const PVertex* co
   for (int i = 0; i < n; ++i) {
     const PVertex& p = *v[i];
     ASSERT_GT(p.clip[3], 0.0f) << "iteration " << iter;
-    for (int k = 0; k < 4; ++k) ASSERT_TRUE(std::isfinite(p.win[k])) << "iteration " << iter;
+    for (int k = 0; k < 4; ++k)
+      ASSERT_TRUE(std::isfinite(p.win[k])) << "iteration " << iter;
     ASSERT_LE(std::fabs(p.win[0]), 2.0f * kGuardBand) << "iteration " << iter;
     ASSERT_LE(std::fabs(p.win[1]), 2.0f * kGuardBand) << "iteration " << iter;
     const float scale = std::fabs(p.clip[0]) + std::fabs(p.clip[1]) + std::fabs(p.clip[2]) +
@@ -111,7 +118,8 @@ TEST(PropertyClip, ExtremeInputGivesRasterizableOutput) {
     const uint32_t planes = planes_for_mask(v[0].clipmask | v[1].clipmask | v[2].clipmask);
     float input_scale = 0.0f;
     for (const PVertex& p : v)
-      for (const float c : p.clip) input_scale = std::max(input_scale, std::fabs(c));
+      for (const float c : p.clip)
+        input_scale = std::max(input_scale, std::fabs(c));
     ClipPolygon poly;
     poly.n = 3;
     for (int i = 0; i < 3; ++i) {
@@ -127,8 +135,8 @@ TEST(PropertyClip, ExtremeInputGivesRasterizableOutput) {
 
     const PVertex* a = nullptr;
     const PVertex* b = nullptr;
-    if (clip_segment(cs, planes_for_mask(v[0].clipmask | v[1].clipmask), v[0], v[1], scratch,
-                     &a, &b)) {
+    if (clip_segment(cs, planes_for_mask(v[0].clipmask | v[1].clipmask), v[0], v[1], scratch, &a,
+                     &b)) {
       const PVertex* seg[3] = {a, b, b};
       expect_rasterizable(cs, planes_for_mask(v[0].clipmask | v[1].clipmask), seg, 3, iter,
                           input_scale);
@@ -157,7 +165,8 @@ std::vector<DVec> reference_clip(std::vector<DVec> poly, double& min_w) {
         // crossing is within 1e-16 of b and a is 1e26 away.
         const double t = da / (da - db), u = -db / (da - db);
         DVec x;
-        for (int k = 0; k < 4; ++k) x[k] = t <= 0.5 ? a[k] + t * (b[k] - a[k]) : b[k] + u * (a[k] - b[k]);
+        for (int k = 0; k < 4; ++k)
+          x[k] = t <= 0.5 ? a[k] + t * (b[k] - a[k]) : b[k] + u * (a[k] - b[k]);
         min_w = std::min(min_w, std::fabs(x[3]));
         out.push_back(x);
       }
@@ -208,9 +217,11 @@ TEST(PropertyClip, ExtremeTrianglesMatchDoubleReference) {
       float c[4];
       if (i == 0) {
         c[3] = wn(rng);
-        for (int k = 0; k < 3; ++k) c[k] = near_u(rng) * c[3];
+        for (int k = 0; k < 3; ++k)
+          c[k] = near_u(rng) * c[3];
       } else {
-        for (int k = 0; k < 4; ++k) c[k] = ranged(rng);
+        for (int k = 0; k < 4; ++k)
+          c[k] = ranged(rng);
       }
       v[i] = make_vertex(cs, c);
       ref_in.push_back({c[0], c[1], c[2], c[3]});
@@ -221,7 +232,8 @@ TEST(PropertyClip, ExtremeTrianglesMatchDoubleReference) {
     // meaningful projection even in double; only well-conditioned references are compared.
     bool conditioned = true;
     for (const DVec& r : ref)
-      conditioned = conditioned && std::fabs(r[0]) <= 1.001 * r[3] && std::fabs(r[1]) <= 1.001 * r[3];
+      conditioned =
+          conditioned && std::fabs(r[0]) <= 1.001 * r[3] && std::fabs(r[1]) <= 1.001 * r[3];
     if (!conditioned) continue;
     double ref_area = 0, perimeter = 0;
     if (!ref.empty()) window_measure(ref, ref_area, perimeter);
@@ -246,8 +258,10 @@ TEST(PropertyClip, ExtremeTrianglesMatchDoubleReference) {
     // the eye is ill-conditioned in any precision that starts from float distances).
     double input_max = 0.0, min_w = 1e300;
     for (const DVec& r : ref_in)
-      for (const double c : r) input_max = std::max(input_max, std::fabs(c));
-    for (const DVec& r : ref) min_w = std::min(min_w, r[3]);
+      for (const double c : r)
+        input_max = std::max(input_max, std::fabs(c));
+    for (const DVec& r : ref)
+      min_w = std::min(min_w, r[3]);
     // A crossing made next to the eye (w tiny against the inputs) projects anywhere.
     if (created_w < 1e-4 * input_max) continue;
     const double tol = 0.004 * perimeter + 1e-4 * std::fabs(ref_area) + 0.05 +
@@ -273,7 +287,8 @@ TEST(PropertyClip, NearCrossingNextToFarVertexStaysInFront) {
                          {55.8544f, 58.5027f, -7.86958f, -7.85654f},
                          {1.22035e18f, 2.36958e18f, 2.58574e18f, 2.58574e18f}};
   PVertex v[3];
-  for (int i = 0; i < 3; ++i) v[i] = make_vertex(cs, c[i]);
+  for (int i = 0; i < 3; ++i)
+    v[i] = make_vertex(cs, c[i]);
   ClipPolygon poly;
   poly.n = 3;
   for (int i = 0; i < 3; ++i) {
@@ -291,12 +306,14 @@ TEST(PropertyClip, NearCrossingNextToFarVertexStaysInFront) {
   DrawCall dc{&count, &t.fb};
   for (int i = 0; i < poly.n; ++i) {
     PVertex& p = const_cast<PVertex&>(*poly.v[i]);
-    for (int k = 0; k < 4; ++k) p.attr[k] = test::kCountColor[k];
+    for (int k = 0; k < 4; ++k)
+      p.attr[k] = test::kCountColor[k];
   }
   for (int i = 1; i + 1 < poly.n; ++i)
     raster_triangle(dc, *poly.v[0], *poly.v[i], *poly.v[i + 1], *poly.v[0], false);
   for (int y = 0; y < 47; ++y)
-    for (int x = 0; x < 61; ++x) ASSERT_LE(t.rgba(x, y)[0], 1) << x << "," << y;
+    for (int x = 0; x < 61; ++x)
+      ASSERT_LE(t.rgba(x, y)[0], 1) << x << "," << y;
 }
 
 // Regression: a denormal w passes every frustum test, but 1/w overflows, so the vertex used
@@ -315,14 +332,16 @@ TEST(PropertyClip, DenormalWIsNotProjected) {
   EXPECT_EQ(clip_code(cs, n), 0u);
   PVertex v[3];
   const float cs3[3][4] = {{0, 0, 0, 4 * d}, {d, 0, 0, 4 * d}, {0, d, 0, 4 * d}};
-  for (int i = 0; i < 3; ++i) v[i] = make_vertex(cs, cs3[i]);
+  for (int i = 0; i < 3; ++i)
+    v[i] = make_vertex(cs, cs3[i]);
   test::TestFb t(32, 32, ColorFormat::RGBA8, 24);
   RasterState draw = rs;
   DrawCall dc{&draw, &t.fb};
   for (const GLenum mode : {GL_TRIANGLES, GL_LINE_LOOP, GL_POINTS})
     draw_primitives(dc, mode, v, nullptr, 3);
   for (int y = 0; y < 32; ++y)
-    for (int x = 0; x < 32; ++x) EXPECT_EQ(t.rgba(x, y)[0], 0);
+    for (int x = 0; x < 32; ++x)
+      EXPECT_EQ(t.rgba(x, y)[0], 0);
 }
 
 } // namespace

@@ -90,7 +90,7 @@ void scene_triangles(Rng& rng) {
   }
   glEnd();
   // A lit draw of more than 4096 vertices: transformed and lit by every worker, each taking a
-  // range of the vertices (geometry/transform.cpp).
+  // range of the vertices (draw/draw.cpp).
   glEnable(GL_LIGHTING);
   glEnable(GL_LIGHT0);
   glEnable(GL_LIGHT1);

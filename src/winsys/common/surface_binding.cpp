@@ -1,7 +1,7 @@
 // The window systems' access to a Context (surface_binding.h).
 #include "winsys/common/surface_binding.h"
 
-#include "core/context.h"
+#include "state/context.h"
 #include "state/draw_read_buffer.h"
 
 namespace pineda::winsys {
@@ -50,13 +50,13 @@ bool never_current(const Context* ctx) {
 void first_make_current(Context* ctx, int width, int height, bool has_back) {
   if (ctx->ever_current) return;
   ctx->ever_current = true;
-  ctx->vp_w = width;
-  ctx->vp_h = height;
-  ctx->scissor_box[2] = width;
-  ctx->scissor_box[3] = height;
+  ctx->viewport.w = width;
+  ctx->viewport.h = height;
+  ctx->scissor.box[2] = width;
+  ctx->scissor.box[3] = height;
   const GLenum initial = has_back ? GL_BACK : GL_FRONT;
-  ctx->draw_buffer = initial;
-  ctx->read_buffer = initial;
+  ctx->color_buffer.draw_buffer = initial;
+  ctx->pixel.read_buffer = initial;
   mark_dirty(ctx, kDirtyViewport | kDirtyFragment);
 }
 

@@ -19,7 +19,7 @@
 #include <unordered_map>
 #include <vector>
 
-#include "core/context.h"
+#include "state/context.h"
 #include "winsys/common/surface_binding.h"
 #include "winsys/x11/x11_target.h"
 

@@ -8,8 +8,8 @@
 #include <new>
 #include <vector>
 
-#include "core/api_util.h"
-#include "core/context.h"
+#include "state/api_util.h"
+#include "state/context.h"
 #include "core/version.h"
 #include "dispatch.h"
 #include "winsys/common/surface_binding.h"

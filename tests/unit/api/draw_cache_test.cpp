@@ -1,4 +1,4 @@
-// The per-draw setup kept across draws (src/geometry/draw_cache.h) must follow every change
+// The per-draw setup kept across draws (src/draw/draw_cache.h) must follow every change
 // of what it was made from: GL state between draws, another colour buffer of the same size,
 // and the texture units a Begin/End copies.
 #include <array>

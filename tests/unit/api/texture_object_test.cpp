@@ -8,9 +8,9 @@
 #include <vector>
 
 #include "api_fixture.h"
-#include "core/context.h"
+#include "state/context.h"
 #include "texture/sampler.h"
-#include "texture/texture_object.h"
+#include "state/texture_object.h"
 
 namespace {
 

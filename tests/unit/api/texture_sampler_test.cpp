@@ -11,8 +11,8 @@
 #include <vector>
 
 #include "texture/sampler.h"
-#include "texture/tex_format.h"
-#include "texture/texture_object.h"
+#include "state/tex_format.h"
+#include "state/texture_object.h"
 
 namespace {
 

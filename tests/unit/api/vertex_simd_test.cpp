@@ -19,6 +19,7 @@
 #include "geometry/clip.h"
 #include "geometry/light_eval.h"
 #include "geometry/vertex_simd.h"
+#include "state/lighting.h"
 #include "raster/raster.h"
 
 namespace pineda {
@@ -117,7 +118,8 @@ void check_lighting_matches_scalar() {
   const glm::mat4 mv = glm::rotate(glm::translate(glm::mat4(1.0f), glm::vec3(0.0f, 0.5f, -5.0f)),
                                    0.4f, glm::vec3(1.0f, 0.2f, 0.0f));
   for (int config = 0; config < 16; ++config) {
-    LightingState ls;
+    LightingGroup ls;
+    LightSetup setup;
     ls.enabled = true;
     ls.local_viewer = (config & 1) != 0;
     ls.two_side = (config & 2) != 0;
@@ -145,14 +147,14 @@ void check_lighting_matches_scalar() {
         m.specular[c] = 0.7f;
     }
     ls.material[1].diffuse[0] = 0.2f;
-    setup_lighting(ls.setup, ls, mv, normalize, false);
+    setup_lighting(setup, ls, mv, normalize, false);
     LitFaces faces;
-    prepare_lit_faces(ls.setup, ls.material, nullptr, faces);
+    prepare_lit_faces(setup, ls.material, nullptr, faces);
     const std::vector<InputVertex> in = random_vertices(100u + static_cast<uint32_t>(config));
     std::vector<PVertex> got(kCount), want(kCount);
-    light_vertices(ls.setup, faces, in.data(), got.data(), kCount);
+    light_vertices(setup, faces, in.data(), got.data(), kCount);
     for (size_t i = 0; i < kCount; ++i) {
-      light_vertex_faces(ls.setup, faces, in[i].pos, in[i].normal, want[i].attr);
+      light_vertex_faces(setup, faces, in[i].pos, in[i].normal, want[i].attr);
       expect_same_floats(got[i].attr + kAttrColor, want[i].attr + kAttrColor, 8, i, "front");
       if (ls.two_side)
         expect_same_floats(got[i].attr + kAttrBackColor, want[i].attr + kAttrBackColor, 8, i,
@@ -202,7 +204,7 @@ TEST(VertexSimd, LitPowMatchesDoublePow) {
   EXPECT_EQ(pineda::lit_pow(0.0f, 40.0f), 0.0f);
 }
 
-// A DrawArrays of independent triangles longer than one slice (transform.cpp draws such a draw
+// A DrawArrays of independent triangles longer than one slice (draw/draw.cpp draws such a draw
 // a slice of vertices at a time) gives the pixels and the sample count of the same triangles
 // drawn by calls short enough to be drawn whole.
 class SlicedDrawTest : public GLTest {};

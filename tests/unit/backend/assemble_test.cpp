@@ -6,6 +6,7 @@
 #include <cmath>
 #include <vector>
 
+#include "geometry/assemble.h"
 #include "geometry/clip.h"
 #include "geometry/cull.h"
 
@@ -298,7 +299,8 @@ TEST(Assemble, GuardBitAloneDoesNotRejectATriangle) {
   const float far = 1e6f;
   const std::vector<PVertex> v = {win_vertex(rs, -far, -far, 0), win_vertex(rs, far, -far, 1),
                                   win_vertex(rs, 50.0f, far, 2)};
-  for (const PVertex& p : v) ASSERT_NE(p.clipmask & kClipGuard, 0u);
+  for (const PVertex& p : v)
+    ASSERT_NE(p.clipmask & kClipGuard, 0u);
   const Recorder r = draw(rs, GL_TRIANGLES, v);
   ASSERT_FALSE(r.tris.empty());
   // What remains is the whole viewport, split into triangles.

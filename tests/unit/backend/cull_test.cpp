@@ -4,6 +4,7 @@
 
 #include <vector>
 
+#include "geometry/assemble.h"
 #include "geometry/clip.h"
 #include "geometry/cull.h"
 

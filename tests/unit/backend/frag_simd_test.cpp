@@ -14,7 +14,7 @@
 #include "fragment/blend.h"
 #include "fragment/blend_simd.h"
 #include "fragment/fragment_ops.h"
-#include "fragment/simd.h"
+#include "core/simd.h"
 #include "raster/raster.h"
 #include "raster_test_util.h"
 

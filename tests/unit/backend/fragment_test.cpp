@@ -10,6 +10,7 @@
 
 #include "fragment/blend.h"
 #include "fragment/fragment_ops.h"
+#include "framebuffer/clear.h"
 #include "raster/raster.h"
 #include "raster_test_util.h"
 
@@ -32,7 +33,7 @@ void fill_screen(const DrawCall& dc, float z, std::array<float, 4> c) {
 }
 
 TEST(Fragment, AllDepthFunctions) {
-  const GLenum funcs[] = {GL_NEVER, GL_LESS, GL_EQUAL, GL_LEQUAL,
+  const GLenum funcs[] = {GL_NEVER,   GL_LESS,     GL_EQUAL,  GL_LEQUAL,
                           GL_GREATER, GL_NOTEQUAL, GL_GEQUAL, GL_ALWAYS};
   const float zs[] = {0.25f, 0.5f, 0.75f}; // less, equal, greater than the stored 0.5
   for (GLenum f : funcs) {
@@ -110,21 +111,36 @@ TEST(Fragment, DepthScaleForEachBufferSize) {
 double ref_factor(GLenum f, int ch, const double s[4], const double d[4], const double k[4]) {
   const bool alpha = ch == 3;
   switch (f) {
-  case GL_ZERO: return 0;
-  case GL_ONE: return 1;
-  case GL_SRC_COLOR: return s[ch];
-  case GL_ONE_MINUS_SRC_COLOR: return 1 - s[ch];
-  case GL_DST_COLOR: return d[ch];
-  case GL_ONE_MINUS_DST_COLOR: return 1 - d[ch];
-  case GL_SRC_ALPHA: return s[3];
-  case GL_ONE_MINUS_SRC_ALPHA: return 1 - s[3];
-  case GL_DST_ALPHA: return d[3];
-  case GL_ONE_MINUS_DST_ALPHA: return 1 - d[3];
-  case GL_CONSTANT_COLOR: return k[ch];
-  case GL_ONE_MINUS_CONSTANT_COLOR: return 1 - k[ch];
-  case GL_CONSTANT_ALPHA: return k[3];
-  case GL_ONE_MINUS_CONSTANT_ALPHA: return 1 - k[3];
-  case GL_SRC_ALPHA_SATURATE: return alpha ? 1 : std::min(s[3], 1 - d[3]);
+  case GL_ZERO:
+    return 0;
+  case GL_ONE:
+    return 1;
+  case GL_SRC_COLOR:
+    return s[ch];
+  case GL_ONE_MINUS_SRC_COLOR:
+    return 1 - s[ch];
+  case GL_DST_COLOR:
+    return d[ch];
+  case GL_ONE_MINUS_DST_COLOR:
+    return 1 - d[ch];
+  case GL_SRC_ALPHA:
+    return s[3];
+  case GL_ONE_MINUS_SRC_ALPHA:
+    return 1 - s[3];
+  case GL_DST_ALPHA:
+    return d[3];
+  case GL_ONE_MINUS_DST_ALPHA:
+    return 1 - d[3];
+  case GL_CONSTANT_COLOR:
+    return k[ch];
+  case GL_ONE_MINUS_CONSTANT_COLOR:
+    return 1 - k[ch];
+  case GL_CONSTANT_ALPHA:
+    return k[3];
+  case GL_ONE_MINUS_CONSTANT_ALPHA:
+    return 1 - k[3];
+  case GL_SRC_ALPHA_SATURATE:
+    return alpha ? 1 : std::min(s[3], 1 - d[3]);
   }
   return -1;
 }
@@ -132,21 +148,41 @@ double ref_factor(GLenum f, int ch, const double s[4], const double d[4], const 
 double ref_blend(GLenum eq, double s, double d, double fs, double fd) {
   double v = 0;
   switch (eq) {
-  case GL_FUNC_ADD: v = s * fs + d * fd; break;
-  case GL_FUNC_SUBTRACT: v = s * fs - d * fd; break;
-  case GL_FUNC_REVERSE_SUBTRACT: v = d * fd - s * fs; break;
-  case GL_MIN: v = std::min(s, d); break;
-  case GL_MAX: v = std::max(s, d); break;
+  case GL_FUNC_ADD:
+    v = s * fs + d * fd;
+    break;
+  case GL_FUNC_SUBTRACT:
+    v = s * fs - d * fd;
+    break;
+  case GL_FUNC_REVERSE_SUBTRACT:
+    v = d * fd - s * fs;
+    break;
+  case GL_MIN:
+    v = std::min(s, d);
+    break;
+  case GL_MAX:
+    v = std::max(s, d);
+    break;
   }
   return std::clamp(v, 0.0, 1.0) * 255.0;
 }
 
 TEST(Fragment, BlendEveryFactorAndEquationMatchesReference) {
-  const GLenum factors[] = {
-      GL_ZERO, GL_ONE, GL_SRC_COLOR, GL_ONE_MINUS_SRC_COLOR, GL_DST_COLOR,
-      GL_ONE_MINUS_DST_COLOR, GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_DST_ALPHA,
-      GL_ONE_MINUS_DST_ALPHA, GL_CONSTANT_COLOR, GL_ONE_MINUS_CONSTANT_COLOR, GL_CONSTANT_ALPHA,
-      GL_ONE_MINUS_CONSTANT_ALPHA, GL_SRC_ALPHA_SATURATE};
+  const GLenum factors[] = {GL_ZERO,
+                            GL_ONE,
+                            GL_SRC_COLOR,
+                            GL_ONE_MINUS_SRC_COLOR,
+                            GL_DST_COLOR,
+                            GL_ONE_MINUS_DST_COLOR,
+                            GL_SRC_ALPHA,
+                            GL_ONE_MINUS_SRC_ALPHA,
+                            GL_DST_ALPHA,
+                            GL_ONE_MINUS_DST_ALPHA,
+                            GL_CONSTANT_COLOR,
+                            GL_ONE_MINUS_CONSTANT_COLOR,
+                            GL_CONSTANT_ALPHA,
+                            GL_ONE_MINUS_CONSTANT_ALPHA,
+                            GL_SRC_ALPHA_SATURATE};
   const GLenum eqs[] = {GL_FUNC_ADD, GL_FUNC_SUBTRACT, GL_FUNC_REVERSE_SUBTRACT, GL_MIN, GL_MAX};
   const std::array<float, 4> srcs[] = {{0.8f, 0.3f, 0.55f, 0.6f}, {0.1f, 0.9f, 0.45f, 0.2f}};
   const uint8_t dsts[][4] = {{40, 200, 128, 100}, {250, 10, 77, 230}};
@@ -158,20 +194,21 @@ TEST(Fragment, BlendEveryFactorAndEquationMatchesReference) {
         for (size_t ei = 0; ei < std::size(eqs); ++ei) {
           RasterState rs;
           rs.blend = true;
-          rs.blend_src_rgb = factors[fi];
-          rs.blend_dst_rgb = factors[fj];
+          rs.blend_state.src_rgb = factors[fi];
+          rs.blend_state.dst_rgb = factors[fj];
           // Separate alpha factors and equation, rotated through the lists.
-          rs.blend_src_a = factors[(fi + 3 * fj + 1) % std::size(factors)];
-          rs.blend_dst_a = factors[(fi * 7 + fj + 5) % std::size(factors)];
-          rs.blend_eq_rgb = eqs[ei];
-          rs.blend_eq_a = eqs[(ei + fi + fj) % std::size(eqs)];
-          std::copy(konst, konst + 4, rs.blend_color);
+          rs.blend_state.src_a = factors[(fi + 3 * fj + 1) % std::size(factors)];
+          rs.blend_state.dst_a = factors[(fi * 7 + fj + 5) % std::size(factors)];
+          rs.blend_state.eq_rgb = eqs[ei];
+          rs.blend_state.eq_a = eqs[(ei + fi + fj) % std::size(eqs)];
+          std::copy(konst, konst + 4, rs.blend_state.color);
           for (int si = 0; si < 2; ++si) {
             for (int di = 0; di < 2; ++di) {
               TestFb t(2, 1, fmt, 0);
               uint8_t* p = t.pixel(0, 0);
               const bool has_alpha = fmt != ColorFormat::RGB8;
-              for (int k = 0; k < (has_alpha ? 4 : 3); ++k) p[k] = dsts[di][k];
+              for (int k = 0; k < (has_alpha ? 4 : 3); ++k)
+                p[k] = dsts[di][k];
               DrawCall dc{&rs, &t.fb};
               const PVertex v = vtx(0.5f, 0.5f, 0.5f, 1, srcs[si]);
               raster_point(dc, v);
@@ -186,13 +223,13 @@ TEST(Fragment, BlendEveryFactorAndEquationMatchesReference) {
               }
               const auto got = t.rgba(0, 0);
               for (int c = 0; c < (has_alpha ? 4 : 3); ++c) {
-                const GLenum sf = c == 3 ? rs.blend_src_a : rs.blend_src_rgb;
-                const GLenum df = c == 3 ? rs.blend_dst_a : rs.blend_dst_rgb;
-                const GLenum eq = c == 3 ? rs.blend_eq_a : rs.blend_eq_rgb;
-                const double want =
-                    ref_blend(eq, s[c], d[c], ref_factor(sf, c, s, d, k), ref_factor(df, c, s, d, k));
-                ASSERT_NEAR(got[c], want, 1.0)
-                    << "channel " << c << " src " << std::hex << sf << " dst " << df << " eq " << eq;
+                const GLenum sf = c == 3 ? rs.blend_state.src_a : rs.blend_state.src_rgb;
+                const GLenum df = c == 3 ? rs.blend_state.dst_a : rs.blend_state.dst_rgb;
+                const GLenum eq = c == 3 ? rs.blend_state.eq_a : rs.blend_state.eq_rgb;
+                const double want = ref_blend(eq, s[c], d[c], ref_factor(sf, c, s, d, k),
+                                              ref_factor(df, c, s, d, k));
+                ASSERT_NEAR(got[c], want, 1.0) << "channel " << c << " src " << std::hex << sf
+                                               << " dst " << df << " eq " << eq;
                 ++checked;
               }
             }
@@ -214,12 +251,13 @@ TEST(Fragment, BlendOverFastPathIsExact) {
         for (int x = 0; x < width; ++x) {
           uint8_t* p = t.pixel(x, 0);
           const int d = (x * 37) % 256;
-          for (int k = 0; k < bytes_per_pixel(fmt); ++k) p[k] = static_cast<uint8_t>(d);
+          for (int k = 0; k < bytes_per_pixel(fmt); ++k)
+            p[k] = static_cast<uint8_t>(d);
         }
         RasterState rs;
         rs.blend = true;
-        rs.blend_src_rgb = rs.blend_src_a = GL_SRC_ALPHA;
-        rs.blend_dst_rgb = rs.blend_dst_a = GL_ONE_MINUS_SRC_ALPHA;
+        rs.blend_state.src_rgb = rs.blend_state.src_a = GL_SRC_ALPHA;
+        rs.blend_state.dst_rgb = rs.blend_state.dst_a = GL_ONE_MINUS_SRC_ALPHA;
         DrawCall dc{&rs, &t.fb};
         fill_screen(dc, 0.5f, {200 / 255.0f, 10 / 255.0f, 1.0f, a / 255.0f});
         const double ar = a / 255.0;
@@ -243,7 +281,8 @@ TEST(Fragment, DepthOnlyWhenColorMaskIsOff) {
   t.fill_color(9);
   RasterState rs;
   rs.depth_test = true;
-  for (bool& w : rs.color_write) w = false;
+  for (bool& w : rs.color_write)
+    w = false;
   DrawCall dc{&rs, &t.fb};
   fill_screen(dc, 0.25f, {1, 1, 1, 1});
   for (int y = 0; y < 10; ++y)
@@ -260,13 +299,14 @@ TEST(Fragment, ColorMaskEveryCombinationEveryFormat) {
         TestFb t(9, 9, fmt, 0);
         t.fill_color(0x40);
         RasterState rs;
-        for (int k = 0; k < 4; ++k) rs.color_write[k] = (mask >> k) & 1;
+        for (int k = 0; k < 4; ++k)
+          rs.color_write[k] = (mask >> k) & 1;
         rs.blend = blend; // ONE, ZERO: must behave like no blending
         if (blend) {
-          rs.blend_src_rgb = GL_SRC_ALPHA;
-          rs.blend_dst_rgb = GL_ZERO;
-          rs.blend_src_a = GL_ONE;
-          rs.blend_dst_a = GL_ZERO;
+          rs.blend_state.src_rgb = GL_SRC_ALPHA;
+          rs.blend_state.dst_rgb = GL_ZERO;
+          rs.blend_state.src_a = GL_ONE;
+          rs.blend_state.dst_a = GL_ZERO;
         }
         DrawCall dc{&rs, &t.fb};
         fill_screen(dc, 0.5f, {1.0f, 0.5f, 0.0f, 1.0f});
@@ -300,14 +340,23 @@ TEST(Fragment, ByteOrdersAndNegativeStride) {
       const uint8_t* mem = t.color_mem.data() + (top_down ? (6 - 1) * 10 * bpp : 0);
       const uint8_t r = 51, g = 102, b = 153, a = 204;
       switch (fmt) {
-      case ColorFormat::RGBA8: EXPECT_EQ(std::vector<uint8_t>(mem, mem + 4), (std::vector<uint8_t>{r, g, b, a})); break;
-      case ColorFormat::BGRA8: EXPECT_EQ(std::vector<uint8_t>(mem, mem + 4), (std::vector<uint8_t>{b, g, r, a})); break;
-      case ColorFormat::ARGB8: EXPECT_EQ(std::vector<uint8_t>(mem, mem + 4), (std::vector<uint8_t>{a, r, g, b})); break;
-      case ColorFormat::RGB8: EXPECT_EQ(std::vector<uint8_t>(mem, mem + 4), (std::vector<uint8_t>{r, g, b, 0})); break;
+      case ColorFormat::RGBA8:
+        EXPECT_EQ(std::vector<uint8_t>(mem, mem + 4), (std::vector<uint8_t>{r, g, b, a}));
+        break;
+      case ColorFormat::BGRA8:
+        EXPECT_EQ(std::vector<uint8_t>(mem, mem + 4), (std::vector<uint8_t>{b, g, r, a}));
+        break;
+      case ColorFormat::ARGB8:
+        EXPECT_EQ(std::vector<uint8_t>(mem, mem + 4), (std::vector<uint8_t>{a, r, g, b}));
+        break;
+      case ColorFormat::RGB8:
+        EXPECT_EQ(std::vector<uint8_t>(mem, mem + 4), (std::vector<uint8_t>{r, g, b, 0}));
+        break;
       }
       // Nothing else was written.
       size_t nonzero = 0;
-      for (uint8_t v : t.color_mem) nonzero += v != 0;
+      for (uint8_t v : t.color_mem)
+        nonzero += v != 0;
       EXPECT_EQ(nonzero, fmt == ColorFormat::RGB8 ? 3u : 4u);
     }
   }
@@ -324,7 +373,8 @@ TEST(Clear, ColorEveryFormatAndMask) {
         cs.color[1] = 0.5f;
         cs.color[2] = 0.25f;
         cs.color[3] = 2.0f; // clamped
-        for (int k = 0; k < 4; ++k) cs.color_write[k] = (mask >> k) & 1;
+        for (int k = 0; k < 4; ++k)
+          cs.color_write[k] = (mask >> k) & 1;
         clear_buffers(t.fb, cs, GL_COLOR_BUFFER_BIT);
         const uint8_t want[4] = {255, 128, 64, 255};
         for (int y = 0; y < 7; ++y)
@@ -343,9 +393,11 @@ TEST(Clear, UniformBytesAndPatterns) {
     TestFb t(5, 3, fmt);
     ClearState cs;
     for (float v : {0.0f, 1.0f}) {
-      for (float& c : cs.color) c = v;
+      for (float& c : cs.color)
+        c = v;
       clear_buffers(t.fb, cs, GL_COLOR_BUFFER_BIT);
-      for (uint8_t b : t.color_mem) ASSERT_EQ(b, v > 0 ? 255 : 0);
+      for (uint8_t b : t.color_mem)
+        ASSERT_EQ(b, v > 0 ? 255 : 0);
     }
   }
 }
@@ -401,17 +453,18 @@ TEST(Fragment, KeySelection) {
   EXPECT_EQ(make_state_key(rs, fb).depth_path(), DepthPath::Generic);
   rs.blend = true; // ONE, ZERO, ADD is a plain store
   EXPECT_EQ(make_state_key(rs, fb).blend_path(), BlendPath::Off);
-  rs.blend_src_rgb = rs.blend_src_a = GL_SRC_ALPHA;
-  rs.blend_dst_rgb = rs.blend_dst_a = GL_ONE_MINUS_SRC_ALPHA;
+  rs.blend_state.src_rgb = rs.blend_state.src_a = GL_SRC_ALPHA;
+  rs.blend_state.dst_rgb = rs.blend_state.dst_a = GL_ONE_MINUS_SRC_ALPHA;
   EXPECT_EQ(make_state_key(rs, fb).blend_path(), BlendPath::Over);
-  rs.blend_eq_a = GL_MAX;
+  rs.blend_state.eq_a = GL_MAX;
   EXPECT_EQ(make_state_key(rs, fb).blend_path(), BlendPath::Generic);
   rs.color_write[3] = false;
   EXPECT_EQ(make_state_key(rs, fb).color_path(), ColorPath::Partial);
   fb.color_format = ColorFormat::RGB8; // no alpha: RGB is every channel
   fb.alpha_bits = 0;
   EXPECT_EQ(make_state_key(rs, fb).color_path(), ColorPath::All);
-  for (bool& w : rs.color_write) w = false;
+  for (bool& w : rs.color_write)
+    w = false;
   EXPECT_EQ(make_state_key(rs, fb).color_path(), ColorPath::None);
   fb.depth = nullptr;
   FragCtx ctx;

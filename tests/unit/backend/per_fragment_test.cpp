@@ -11,6 +11,7 @@
 
 #include "fragment/fragment_ops.h"
 #include "fragment/per_fragment.h"
+#include "framebuffer/clear.h"
 #include "raster/raster.h"
 #include "raster_test_util.h"
 
@@ -20,9 +21,9 @@ namespace {
 using test::TestFb;
 using test::vtx;
 
-constexpr GLenum kFuncs[8] = {GL_NEVER, GL_LESS, GL_EQUAL, GL_LEQUAL,
+constexpr GLenum kFuncs[8] = {GL_NEVER,   GL_LESS,     GL_EQUAL,  GL_LEQUAL,
                               GL_GREATER, GL_NOTEQUAL, GL_GEQUAL, GL_ALWAYS};
-constexpr GLenum kStencilOps[8] = {GL_KEEP, GL_ZERO, GL_REPLACE, GL_INCR,
+constexpr GLenum kStencilOps[8] = {GL_KEEP, GL_ZERO,   GL_REPLACE,   GL_INCR,
                                    GL_DECR, GL_INVERT, GL_INCR_WRAP, GL_DECR_WRAP};
 constexpr ColorFormat kFormats[] = {ColorFormat::RGBA8, ColorFormat::BGRA8, ColorFormat::ARGB8,
                                     ColorFormat::RGB8};
@@ -30,29 +31,46 @@ constexpr ColorFormat kFormats[] = {ColorFormat::RGBA8, ColorFormat::BGRA8, Colo
 // The comparison functions spelled out from GL 2.1 §4.1.4 / §4.1.5.
 bool ref_compare(GLenum func, int a, int b) {
   switch (func) {
-  case GL_NEVER: return false;
-  case GL_LESS: return a < b;
-  case GL_EQUAL: return a == b;
-  case GL_LEQUAL: return a <= b;
-  case GL_GREATER: return a > b;
-  case GL_NOTEQUAL: return a != b;
-  case GL_GEQUAL: return a >= b;
-  default: return true;
+  case GL_NEVER:
+    return false;
+  case GL_LESS:
+    return a < b;
+  case GL_EQUAL:
+    return a == b;
+  case GL_LEQUAL:
+    return a <= b;
+  case GL_GREATER:
+    return a > b;
+  case GL_NOTEQUAL:
+    return a != b;
+  case GL_GEQUAL:
+    return a >= b;
+  default:
+    return true;
   }
 }
 
 // The stencil operations of GL 2.1 §4.1.5 on an 8-bit value, in int arithmetic.
 int ref_stencil_op(GLenum op, int v, int ref) {
   switch (op) {
-  case GL_KEEP: return v;
-  case GL_ZERO: return 0;
-  case GL_REPLACE: return ref;
-  case GL_INCR: return v < 255 ? v + 1 : 255;
-  case GL_DECR: return v > 0 ? v - 1 : 0;
-  case GL_INVERT: return 255 - v;
-  case GL_INCR_WRAP: return (v + 1) % 256;
-  case GL_DECR_WRAP: return (v + 255) % 256;
-  default: return -1;
+  case GL_KEEP:
+    return v;
+  case GL_ZERO:
+    return 0;
+  case GL_REPLACE:
+    return ref;
+  case GL_INCR:
+    return v < 255 ? v + 1 : 255;
+  case GL_DECR:
+    return v > 0 ? v - 1 : 0;
+  case GL_INVERT:
+    return 255 - v;
+  case GL_INCR_WRAP:
+    return (v + 1) % 256;
+  case GL_DECR_WRAP:
+    return (v + 255) % 256;
+  default:
+    return -1;
   }
 }
 
@@ -60,23 +78,56 @@ int ref_stencil_op(GLenum op, int v, int ref) {
 int ref_logic(GLenum op, int s, int d) {
   int r = 0;
   switch (op) {
-  case GL_CLEAR: r = 0; break;
-  case GL_AND: r = s & d; break;
-  case GL_AND_REVERSE: r = s & ~d; break;
-  case GL_COPY: r = s; break;
-  case GL_AND_INVERTED: r = ~s & d; break;
-  case GL_NOOP: r = d; break;
-  case GL_XOR: r = s ^ d; break;
-  case GL_OR: r = s | d; break;
-  case GL_NOR: r = ~(s | d); break;
-  case GL_EQUIV: r = ~(s ^ d); break;
-  case GL_INVERT: r = ~d; break;
-  case GL_OR_REVERSE: r = s | ~d; break;
-  case GL_COPY_INVERTED: r = ~s; break;
-  case GL_OR_INVERTED: r = ~s | d; break;
-  case GL_NAND: r = ~(s & d); break;
-  case GL_SET: r = 0xff; break;
-  default: break;
+  case GL_CLEAR:
+    r = 0;
+    break;
+  case GL_AND:
+    r = s & d;
+    break;
+  case GL_AND_REVERSE:
+    r = s & ~d;
+    break;
+  case GL_COPY:
+    r = s;
+    break;
+  case GL_AND_INVERTED:
+    r = ~s & d;
+    break;
+  case GL_NOOP:
+    r = d;
+    break;
+  case GL_XOR:
+    r = s ^ d;
+    break;
+  case GL_OR:
+    r = s | d;
+    break;
+  case GL_NOR:
+    r = ~(s | d);
+    break;
+  case GL_EQUIV:
+    r = ~(s ^ d);
+    break;
+  case GL_INVERT:
+    r = ~d;
+    break;
+  case GL_OR_REVERSE:
+    r = s | ~d;
+    break;
+  case GL_COPY_INVERTED:
+    r = ~s;
+    break;
+  case GL_OR_INVERTED:
+    r = ~s | d;
+    break;
+  case GL_NAND:
+    r = ~(s & d);
+    break;
+  case GL_SET:
+    r = 0xff;
+    break;
+  default:
+    break;
   }
   return r & 0xff;
 }
@@ -140,14 +191,14 @@ TEST(PerFragment, StencilWithDepthAgainstReference) {
         }
         RasterState rs;
         rs.stencil_test = true;
-        rs.stencil_func = kFuncs[fi];
-        rs.stencil_ref = variant == 2 ? 300 : 0x5a; // 300 clamps to 255
-        rs.stencil_value_mask = variant == 1 ? 0xf0u : 0xffffffffu;
-        rs.stencil_writemask = variant == 1 ? 0x3cu : 0xffffffffu;
+        rs.stencil.func = kFuncs[fi];
+        rs.stencil.ref = variant == 2 ? 300 : 0x5a; // 300 clamps to 255
+        rs.stencil.value_mask = variant == 1 ? 0xf0u : 0xffffffffu;
+        rs.stencil.writemask = variant == 1 ? 0x3cu : 0xffffffffu;
         // A different op for each outcome to tell them apart.
-        rs.stencil_fail = kStencilOps[oi];
-        rs.stencil_depth_fail = kStencilOps[(oi + 3) % 8];
-        rs.stencil_depth_pass = kStencilOps[(oi + 5) % 8];
+        rs.stencil.fail = kStencilOps[oi];
+        rs.stencil.depth_fail = kStencilOps[(oi + 3) % 8];
+        rs.stencil.depth_pass = kStencilOps[(oi + 5) % 8];
         rs.depth_test = variant != 2; // variant 2: depth off counts as passing
         DrawCall dc{&rs, &t.fb};
         fill_screen(dc, 0.5f, {1, 0, 0, 1});
@@ -158,13 +209,12 @@ TEST(PerFragment, StencilWithDepthAgainstReference) {
             const size_t i = static_cast<size_t>(y) * w + x;
             const bool spass = ref_compare(kFuncs[fi], ref & vm, st0[i] & vm);
             const bool zpass = !rs.depth_test || !z_old[i];
-            const GLenum op = !spass ? rs.stencil_fail
-                                     : (!zpass ? rs.stencil_depth_fail : rs.stencil_depth_pass);
+            const GLenum op =
+                !spass ? rs.stencil.fail : (!zpass ? rs.stencil.depth_fail : rs.stencil.depth_pass);
             const int nv = ref_stencil_op(op, st0[i], ref);
             const int expect = (st0[i] & ~wm) | (nv & wm);
-            ASSERT_EQ(stencil_at(t, x, y), expect)
-                << "func " << fi << " op " << oi << " variant " << variant << " at " << x << ","
-                << y;
+            ASSERT_EQ(stencil_at(t, x, y), expect) << "func " << fi << " op " << oi << " variant "
+                                                   << variant << " at " << x << "," << y;
             ASSERT_EQ(t.rgba(x, y)[0], spass && zpass ? 255 : 0);
           }
       }
@@ -179,7 +229,7 @@ TEST(PerFragment, NoStencilBufferPasses) {
   t.fb.stencil_bits = 0;
   RasterState rs;
   rs.stencil_test = true;
-  rs.stencil_func = GL_NEVER;
+  rs.stencil.func = GL_NEVER;
   DrawCall dc{&rs, &t.fb};
   fill_screen(dc, 0.5f, {0, 1, 0, 1});
   EXPECT_EQ(t.rgba(3, 3)[1], 255);
@@ -250,8 +300,8 @@ TEST(PerFragment, AlphaTestBeforeStencilAndDepth) {
   rs.alpha_ref = 0.5f;
   rs.depth_test = true;
   rs.stencil_test = true;
-  rs.stencil_depth_pass = GL_INCR;
-  rs.stencil_fail = GL_INCR;
+  rs.stencil.depth_pass = GL_INCR;
+  rs.stencil.fail = GL_INCR;
   DrawCall dc{&rs, &t.fb};
   fill_screen(dc, 0.25f, {1, 1, 1, 0.25f});
   for (int y = 0; y < 8; ++y)
@@ -272,22 +322,23 @@ TEST(PerFragment, LogicOpsThroughPipeline) {
       for (bool partial : {false, true}) {
         const int w = 13, h = 5;
         TestFb t(w, h, fmt);
-        for (auto& b : t.color_mem) b = static_cast<uint8_t>(rng() & 0xff);
+        for (auto& b : t.color_mem)
+          b = static_cast<uint8_t>(rng() & 0xff);
         std::vector<std::array<uint8_t, 4>> before;
         for (int y = 0; y < h; ++y)
-          for (int x = 0; x < w; ++x) before.push_back(t.rgba(x, y));
+          for (int x = 0; x < w; ++x)
+            before.push_back(t.rgba(x, y));
         RasterState rs;
         rs.logic_op = true;
         rs.logic_op_mode = op;
         rs.blend = true;
-        rs.blend_src_rgb = rs.blend_src_a = GL_ZERO;
-        rs.blend_dst_rgb = rs.blend_dst_a = GL_ONE;
+        rs.blend_state.src_rgb = rs.blend_state.src_a = GL_ZERO;
+        rs.blend_state.dst_rgb = rs.blend_state.dst_a = GL_ONE;
         if (partial) rs.color_write[1] = false;
         DrawCall dc{&rs, &t.fb};
         // 0x33, 0x5a, 0xcc, 0xa5 as colour.
         const int src[4] = {0x33, 0x5a, 0xcc, 0xa5};
-        fill_screen(dc, 0.5f, {src[0] / 255.0f, src[1] / 255.0f, src[2] / 255.0f,
-                               src[3] / 255.0f});
+        fill_screen(dc, 0.5f, {src[0] / 255.0f, src[1] / 255.0f, src[2] / 255.0f, src[3] / 255.0f});
         for (int y = 0; y < h; ++y)
           for (int x = 0; x < w; ++x) {
             const auto got = t.rgba(x, y);
@@ -316,7 +367,8 @@ TEST(PerFragment, ScissorClipsEveryPrimitiveAndClear) {
       TestFb clipped(w, h), full(w, h);
       RasterState rs_clip, rs_full;
       rs_clip.scissor_test = true;
-      for (int i = 0; i < 4; ++i) rs_clip.scissor[i] = box[i];
+      for (int i = 0; i < 4; ++i)
+        rs_clip.scissor[i] = box[i];
       for (int pass = 0; pass < 2; ++pass) {
         TestFb& t = pass == 0 ? clipped : full;
         const RasterState& rs = pass == 0 ? rs_clip : rs_full;
@@ -326,24 +378,27 @@ TEST(PerFragment, ScissorClipsEveryPrimitiveAndClear) {
                           vtx(12, 33, 0.5f, 1, {0, 0, 1, 1}), vtx(12, 33), false);
         } else if (prim == 1) {
           for (int i = 0; i < 12; ++i)
-            raster_line(dc, vtx(18.3f, 14.2f), vtx(18.3f + 25.0f * ((i % 5) - 2), 14.2f + 20.0f * ((i % 3) - 1) + i),
+            raster_line(dc, vtx(18.3f, 14.2f),
+                        vtx(18.3f + 25.0f * ((i % 5) - 2), 14.2f + 20.0f * ((i % 3) - 1) + i),
                         vtx(0, 0));
         } else if (prim == 2) {
           for (int y = 0; y < h; y += 2)
-            for (int x = 0; x < w; x += 3) raster_point(dc, vtx(x + 0.5f, y + 0.5f));
+            for (int x = 0; x < w; x += 3)
+              raster_point(dc, vtx(x + 0.5f, y + 0.5f));
         } else {
           ClearState cs;
           cs.color[0] = 1.0f;
           cs.stencil = 7;
           cs.scissor_test = pass == 0;
-          for (int i = 0; i < 4; ++i) cs.scissor[i] = box[i];
+          for (int i = 0; i < 4; ++i)
+            cs.scissor[i] = box[i];
           clear_buffers(t.fb, cs, GL_COLOR_BUFFER_BIT | GL_STENCIL_BUFFER_BIT);
         }
       }
       for (int y = 0; y < h; ++y)
         for (int x = 0; x < w; ++x) {
-          const bool inside = x >= box[0] && x < box[0] + box[2] && y >= box[1] &&
-                              y < box[1] + box[3];
+          const bool inside =
+              x >= box[0] && x < box[0] + box[2] && y >= box[1] && y < box[1] + box[3];
           const auto expect = inside ? full.rgba(x, y) : std::array<uint8_t, 4>{0, 0, 0, 0};
           ASSERT_EQ(clipped.rgba(x, y), expect) << "prim " << prim << " at " << x << "," << y;
           ASSERT_EQ(stencil_at(clipped, x, y), inside ? stencil_at(full, x, y) : 0);
@@ -351,7 +406,8 @@ TEST(PerFragment, ScissorClipsEveryPrimitiveAndClear) {
         }
     }
   }
-  for (int prim = 0; prim < 4; ++prim) EXPECT_GT(written_inside[prim], 10) << prim;
+  for (int prim = 0; prim < 4; ++prim)
+    EXPECT_GT(written_inside[prim], 10) << prim;
 }
 
 // Each operation switched on in a form that cannot change anything selects the very same
@@ -360,17 +416,17 @@ TEST(PerFragment, OperationsOffOrInertChangeNothing) {
   RasterState base;
   base.depth_test = true;
   base.blend = true;
-  base.blend_src_rgb = base.blend_src_a = GL_SRC_ALPHA;
-  base.blend_dst_rgb = base.blend_dst_a = GL_ONE_MINUS_SRC_ALPHA;
+  base.blend_state.src_rgb = base.blend_state.src_a = GL_SRC_ALPHA;
+  base.blend_state.dst_rgb = base.blend_state.dst_a = GL_ONE_MINUS_SRC_ALPHA;
   RasterState inert = base;
-  inert.alpha_test = true; // ALWAYS
+  inert.alpha_test = true;   // ALWAYS
   inert.stencil_test = true; // ALWAYS, KEEP
   inert.scissor_test = true;
   inert.scissor[2] = inert.scissor[3] = 1 << 20;
   RasterState stencil_nowrite = base;
   stencil_nowrite.stencil_test = true;
-  stencil_nowrite.stencil_depth_pass = GL_INVERT;
-  stencil_nowrite.stencil_writemask = 0xff00u; // no bit of an 8-bit buffer
+  stencil_nowrite.stencil.depth_pass = GL_INVERT;
+  stencil_nowrite.stencil.writemask = 0xff00u; // no bit of an 8-bit buffer
   TestFb t0(16, 16);
   for (const RasterState* rs : {&inert, &stencil_nowrite}) {
     for (ShadePath s : {ShadePath::Const, ShadePath::Smooth}) {

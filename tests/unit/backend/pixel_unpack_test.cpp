@@ -16,6 +16,11 @@
 namespace pineda {
 namespace {
 
+// The transfer modes and the maps in one value, as the tests set them up.
+struct Transfer : PixelTransfer, PixelMaps {
+  operator PixelTransferView() const { return {*this, *this}; }
+};
+
 PixelStore tight() {
   PixelStore p;
   p.alignment = 1;
@@ -24,7 +29,7 @@ PixelStore tight() {
 
 template <typename T>
 std::vector<float> rgba_of(const std::vector<T>& data, int w, GLenum format, GLenum type,
-                           PixelStore st = tight(), const PixelTransfer& xfer = PixelTransfer{}) {
+                           PixelStore st = tight(), const Transfer& xfer = Transfer{}) {
   std::vector<float> out(static_cast<size_t>(w) * 4, -99.0f);
   unpack_rgba(data.data(), w, 1, 1, format, type, st, xfer, out.data());
   return out;
@@ -163,7 +168,7 @@ TEST(PixelUnpack, SwapBytes) {
   u = __builtin_bswap32(u);
   const std::vector<uint32_t> fl{u};
   std::vector<float> out(4);
-  unpack_rgba(fl.data(), 1, 1, 1, GL_RED, GL_FLOAT, st, PixelTransfer{}, out.data());
+  unpack_rgba(fl.data(), 1, 1, 1, GL_RED, GL_FLOAT, st, Transfer{}, out.data());
   EXPECT_EQ(out[0], 0.75f);
   // Bytes are not swapped.
   expect_rgba(rgba_of(std::vector<uint8_t>{255, 0, 0, 255}, 1, GL_RGBA, GL_UNSIGNED_BYTE, st), 0, 1,
@@ -175,7 +180,7 @@ TEST(PixelUnpack, AlignmentRowLengthSkipsAndImages) {
   const std::vector<uint8_t> a{255, 0, 0, 99, 0, 255, 0, 99};
   PixelStore st; // alignment 4
   std::vector<float> out(8);
-  unpack_rgba(a.data(), 1, 2, 1, GL_RGB, GL_UNSIGNED_BYTE, st, PixelTransfer{}, out.data());
+  unpack_rgba(a.data(), 1, 2, 1, GL_RGB, GL_UNSIGNED_BYTE, st, Transfer{}, out.data());
   expect_rgba(out, 0, 1, 0, 0, 1);
   expect_rgba(out, 1, 0, 1, 0, 1);
 
@@ -193,7 +198,7 @@ TEST(PixelUnpack, AlignmentRowLengthSkipsAndImages) {
   v.skip_rows = 2;
   v.skip_images = 1;
   std::vector<float> box(16);
-  unpack_rgba(vol.data(), 2, 1, 2, GL_LUMINANCE, GL_UNSIGNED_BYTE, v, PixelTransfer{}, box.data());
+  unpack_rgba(vol.data(), 2, 1, 2, GL_LUMINANCE, GL_UNSIGNED_BYTE, v, Transfer{}, box.data());
   EXPECT_NEAR(box[0], (10 + 8 + 1) / 255.0, 1e-7);
   EXPECT_NEAR(box[4], (10 + 8 + 2) / 255.0, 1e-7);
   EXPECT_NEAR(box[8], (20 + 8 + 1) / 255.0, 1e-7);
@@ -203,7 +208,7 @@ TEST(PixelUnpack, AlignmentRowLengthSkipsAndImages) {
 }
 
 TEST(PixelUnpack, ScaleBiasAndColorMap) {
-  PixelTransfer x;
+  Transfer x;
   x.scale[0] = 2.0f;
   x.bias[1] = 0.5f;
   x.scale[3] = -1.0f;
@@ -212,7 +217,7 @@ TEST(PixelUnpack, ScaleBiasAndColorMap) {
       rgba_of(std::vector<uint8_t>{51, 51, 51, 51}, 1, GL_RGBA, GL_UNSIGNED_BYTE, tight(), x), 0,
       0.4, 0.7, 0.2, 0.8);
   // MAP_COLOR after scale/bias: clamp, times (size - 1), round, look up.
-  x = PixelTransfer{};
+  x = Transfer{};
   x.map_color = true;
   x.maps[kMapRtoR].size = 3;
   x.maps[kMapRtoR].values[0] = 0.9f;
@@ -230,7 +235,7 @@ TEST(PixelUnpack, ScaleBiasAndColorMap) {
 }
 
 TEST(PixelUnpack, ColorIndexThroughMaps) {
-  PixelTransfer x;
+  Transfer x;
   for (int m = kMapItoR; m <= kMapItoA; ++m) {
     x.maps[m].size = 4;
     for (int i = 0; i < 4; ++i)
@@ -252,7 +257,7 @@ TEST(PixelUnpack, ColorIndexThroughMaps) {
 }
 
 TEST(PixelUnpack, BitmapBitOrder) {
-  PixelTransfer x;
+  Transfer x;
   x.maps[kMapItoR].size = 2;
   x.maps[kMapItoR].values[1] = 1.0f;
   // 0xA0 = 1010 0000: MSB first gives 1, 0, 1, 0; LSB first reads bits 0.. of the byte.
@@ -268,14 +273,14 @@ TEST(PixelUnpack, BitmapBitOrder) {
   st.lsb_first = true;
   st.skip_pixels = 6;
   // Bits 6, 7 of 0xA0 then bits 0-3 of 0x05 (LSB first): 0, 1, 1, 0, 1, 0.
-  unpack_index(bits.data(), 6, 1, 1, GL_STENCIL_INDEX, GL_BITMAP, st, PixelTransfer{}, idx.data());
+  unpack_index(bits.data(), 6, 1, 1, GL_STENCIL_INDEX, GL_BITMAP, st, Transfer{}, idx.data());
   const uint32_t want[6] = {0, 1, 1, 0, 1, 0};
   for (int i = 0; i < 6; ++i)
     EXPECT_EQ(idx[static_cast<size_t>(i)], want[i]) << i;
 }
 
 TEST(PixelUnpack, DepthAndStencil) {
-  PixelTransfer x;
+  Transfer x;
   std::vector<float> z(3);
   const std::vector<uint16_t> d16{0, 65535, 13107};
   unpack_depth(d16.data(), 3, 1, 1, GL_UNSIGNED_SHORT, tight(), x, z.data());
@@ -290,7 +295,7 @@ TEST(PixelUnpack, DepthAndStencil) {
   EXPECT_FLOAT_EQ(z[1], 1.25f); // not clamped here
   EXPECT_FLOAT_EQ(z[2], -0.25f);
 
-  PixelTransfer s;
+  Transfer s;
   s.index_shift = 2;
   s.index_offset = -1;
   std::vector<uint32_t> idx(3);
@@ -435,7 +440,7 @@ TEST(PixelRoundTrip, EveryTypeThroughPackAndUnpack) {
       std::vector<uint8_t> mem(64, 0);
       pack_rgba(px.data(), 2, 1, 1, f, t, st, mem.data());
       std::vector<float> back(8);
-      unpack_rgba(mem.data(), 2, 1, 1, f, t, st, PixelTransfer{}, back.data());
+      unpack_rgba(mem.data(), 2, 1, 1, f, t, st, Transfer{}, back.data());
       for (size_t i = 0; i < 8; ++i) {
         // 1/3 quantized to the smallest field (1 bit of 5_5_5_1 alpha is not involved).
         EXPECT_NEAR(back[i], px[i], 1.0 / 30) << std::hex << t << " " << f << " " << i;
@@ -508,7 +513,7 @@ TEST(PixelLayout, AccessesStayInsideClientImageBytes) {
         std::vector<uint8_t> mem(bytes + 16, 0x5a);
         std::vector<float> rgba(groups * 4), depth(groups);
         std::vector<uint32_t> index(groups, 1);
-        const PixelTransfer x;
+        const Transfer x;
         const bool index_format = f == GL_COLOR_INDEX || f == GL_STENCIL_INDEX;
         if (f == GL_DEPTH_COMPONENT) {
           unpack_depth(mem.data(), w, h, d, t, st, x, depth.data());

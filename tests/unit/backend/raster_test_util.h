@@ -54,10 +54,14 @@ struct TestFb {
   std::array<uint8_t, 4> rgba(int x, int y) {
     const uint8_t* p = pixel(x, y);
     switch (fb.color_format) {
-    case ColorFormat::RGBA8: return {p[0], p[1], p[2], p[3]};
-    case ColorFormat::BGRA8: return {p[2], p[1], p[0], p[3]};
-    case ColorFormat::ARGB8: return {p[1], p[2], p[3], p[0]};
-    case ColorFormat::RGB8: return {p[0], p[1], p[2], 255};
+    case ColorFormat::RGBA8:
+      return {p[0], p[1], p[2], p[3]};
+    case ColorFormat::BGRA8:
+      return {p[2], p[1], p[0], p[3]};
+    case ColorFormat::ARGB8:
+      return {p[1], p[2], p[3], p[0]};
+    case ColorFormat::RGB8:
+      return {p[0], p[1], p[2], 255};
     }
     return {0, 0, 0, 0};
   }
@@ -73,7 +77,8 @@ inline PVertex vtx(float x, float y, float z = 0.5f, float inv_w = 1.0f,
   v.win[2] = z;
   v.win[3] = inv_w;
   v.clip[3] = 1.0f / inv_w;
-  for (int k = 0; k < 4; ++k) v.attr[kAttrColor + k] = c[k];
+  for (int k = 0; k < 4; ++k)
+    v.attr[kAttrColor + k] = c[k];
   return v;
 }
 
@@ -81,8 +86,8 @@ inline PVertex vtx(float x, float y, float z = 0.5f, float inv_w = 1.0f,
 inline RasterState counting_state() {
   RasterState rs;
   rs.blend = true;
-  rs.blend_src_rgb = rs.blend_src_a = GL_ONE;
-  rs.blend_dst_rgb = rs.blend_dst_a = GL_ONE;
+  rs.blend_state.src_rgb = rs.blend_state.src_a = GL_ONE;
+  rs.blend_state.dst_rgb = rs.blend_state.dst_a = GL_ONE;
   return rs;
 }
 constexpr std::array<float, 4> kCountColor = {1.0f / 255.0f, 0, 0, 0};

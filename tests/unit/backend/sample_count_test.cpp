@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "fragment/fragment_ops.h"
+#include "geometry/assemble.h"
 #include "raster_test_util.h"
 
 namespace pineda {
@@ -97,10 +98,10 @@ TEST(SampleCount, StencilFailuresDoNotCount) {
   TestFb t(37, 29);
   RasterState rs;
   rs.stencil_test = true;
-  rs.stencil_func = GL_NEVER;
+  rs.stencil.func = GL_NEVER;
   EXPECT_EQ(draw(t, rs, v), 0u);
-  rs.stencil_func = GL_ALWAYS;
-  rs.stencil_depth_pass = GL_INCR; // makes the test "able to change anything"
+  rs.stencil.func = GL_ALWAYS;
+  rs.stencil.depth_pass = GL_INCR; // makes the test "able to change anything"
   const uint64_t all = reference(RasterState{}, v, t);
   EXPECT_EQ(draw(t, rs, v), all);
 }

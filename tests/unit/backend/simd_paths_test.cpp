@@ -18,7 +18,7 @@
 #include "fragment/fragment_ops.h"
 #include "fragment/shade.h"
 #include "core/simd_level.h"
-#include "geometry/vertex.h"
+#include "core/vertex.h"
 #include "raster/raster.h"
 #include "raster_test_util.h"
 
@@ -83,27 +83,27 @@ std::vector<Case> make_cases() {
       c.format = f;
       c.rs.depth_test = true;
       c.rs.blend = true;
-      c.rs.blend_src_rgb = c.rs.blend_src_a = GL_SRC_ALPHA;
-      c.rs.blend_dst_rgb = c.rs.blend_dst_a = GL_ONE_MINUS_SRC_ALPHA;
+      c.rs.blend_state.src_rgb = c.rs.blend_state.src_a = GL_SRC_ALPHA;
+      c.rs.blend_state.dst_rgb = c.rs.blend_state.dst_a = GL_ONE_MINUS_SRC_ALPHA;
     });
     add("fixed" + fs, [f](Case& c) {
       c.format = f;
       c.rs.blend = true;
-      c.rs.blend_src_rgb = GL_DST_COLOR;
-      c.rs.blend_dst_rgb = GL_ONE_MINUS_SRC_COLOR;
-      c.rs.blend_src_a = GL_SRC_ALPHA_SATURATE;
-      c.rs.blend_dst_a = GL_ONE;
-      c.rs.blend_eq_a = GL_FUNC_REVERSE_SUBTRACT;
+      c.rs.blend_state.src_rgb = GL_DST_COLOR;
+      c.rs.blend_state.dst_rgb = GL_ONE_MINUS_SRC_COLOR;
+      c.rs.blend_state.src_a = GL_SRC_ALPHA_SATURATE;
+      c.rs.blend_state.dst_a = GL_ONE;
+      c.rs.blend_state.eq_a = GL_FUNC_REVERSE_SUBTRACT;
     });
     add("const" + fs, [f](Case& c) {
       c.format = f;
       c.rs.blend = true;
-      c.rs.blend_src_rgb = c.rs.blend_src_a = GL_CONSTANT_COLOR;
-      c.rs.blend_dst_rgb = c.rs.blend_dst_a = GL_ONE_MINUS_CONSTANT_ALPHA;
-      c.rs.blend_color[0] = 0.3f;
-      c.rs.blend_color[1] = 0.6f;
-      c.rs.blend_color[2] = 0.9f;
-      c.rs.blend_color[3] = 0.45f;
+      c.rs.blend_state.src_rgb = c.rs.blend_state.src_a = GL_CONSTANT_COLOR;
+      c.rs.blend_state.dst_rgb = c.rs.blend_state.dst_a = GL_ONE_MINUS_CONSTANT_ALPHA;
+      c.rs.blend_state.color[0] = 0.3f;
+      c.rs.blend_state.color[1] = 0.6f;
+      c.rs.blend_state.color[2] = 0.9f;
+      c.rs.blend_state.color[3] = 0.45f;
     });
     add("mask" + fs, [f](Case& c) {
       c.format = f;
@@ -118,8 +118,8 @@ std::vector<Case> make_cases() {
   }
   add("minmax", [](Case& c) {
     c.rs.blend = true;
-    c.rs.blend_eq_rgb = GL_MIN;
-    c.rs.blend_eq_a = GL_MAX;
+    c.rs.blend_state.eq_rgb = GL_MIN;
+    c.rs.blend_state.eq_a = GL_MAX;
   });
   add("alpha", [](Case& c) {
     c.rs.depth_test = true;
@@ -130,11 +130,11 @@ std::vector<Case> make_cases() {
   add("stencil", [](Case& c) {
     c.rs.depth_test = true;
     c.rs.stencil_test = true;
-    c.rs.stencil_func = GL_LEQUAL;
-    c.rs.stencil_ref = 100;
-    c.rs.stencil_fail = GL_INCR;
-    c.rs.stencil_depth_fail = GL_DECR_WRAP;
-    c.rs.stencil_depth_pass = GL_INVERT;
+    c.rs.stencil.func = GL_LEQUAL;
+    c.rs.stencil.ref = 100;
+    c.rs.stencil.fail = GL_INCR;
+    c.rs.stencil.depth_fail = GL_DECR_WRAP;
+    c.rs.stencil.depth_pass = GL_INVERT;
   });
   add("logic", [](Case& c) {
     c.rs.logic_op = true;

@@ -1,0 +1,54 @@
+// The state layer's draws handed to the draw home (draw_call.h).
+#include "state/draw_call.h"
+
+#include "draw/draw.h"
+#include "state/validate.h"
+
+namespace pineda {
+
+uint32_t input_tex_units(Context* ctx) {
+  validate_state(ctx);
+  const TexVertexSetup& tvs = ctx->texpipe.vertex;
+  // As the draw home decides which units the geometry stage reads (draw/draw.cpp).
+  uint32_t units = ctx->raster.shade != nullptr ? tvs.units : 0;
+  // Feedback of the COLOR_TEXTURE types reports unit 0's coordinates (GL 2.1 §5.3).
+  if (!render_mode_is_render(ctx)) units |= 1u;
+  return units;
+}
+
+void draw_vertices(Context* ctx, GLenum mode, const InputVertex* verts, size_t n,
+                   const uint32_t* indices, size_t count) {
+  if (ctx->fb.color == nullptr || n == 0) return;
+  validate_state(ctx);
+  DrawInput in;
+  in.mode = mode;
+  in.in = verts;
+  in.n = n;
+  in.indices = indices;
+  in.count = count;
+  // GL 2.1 §2.14.1: lighting replaces the current colour. Material calls between Begin and
+  // End (§2.14.2) change the material from a given vertex of the primitive on.
+  const LightingGroup& lighting = ctx->lighting;
+  in.lit = lighting.enabled;
+  in.material = lighting.material;
+  if (in.lit && !ctx->imm.material_changes.empty()) {
+    in.changes = ctx->imm.material_changes.data();
+    in.change_count = ctx->imm.material_changes.size();
+    in.material = ctx->imm.begin_material;
+  }
+  // §3.9: with lighting on the colour sum always applies and the secondary colour is zero
+  // unless the specular term is separate; otherwise COLOR_SUM adds the current secondary
+  // colour. Feedback returns the primary colour alone (GL 2.1 §5.3), so nothing is folded in
+  // there.
+  const bool render = ctx->render_mode.mode == GL_RENDER;
+  in.color_sum = (in.lit ? ctx->light_setup.separate_specular : ctx->fog.color_sum) && render;
+  if (render) return draw_vertices(ctx->draw, in);
+  // GL 2.1 §5.2, §5.3: in SELECT and FEEDBACK mode the primitives become selection hits or
+  // feedback values.
+  RenderModeRecords records(ctx->render_mode);
+  in.records = &records;
+  in.texture0 = &ctx->texture_matrix[0].top();
+  draw_vertices(ctx->draw, in);
+}
+
+} // namespace pineda
