@@ -131,7 +131,10 @@ struct RasterState {
   float alpha_ref = 0.0f; // clamped to [0,1] by glAlphaFunc (§4.1.4)
 
   bool stencil_test = false;
-  StencilFace stencil; // the front face's (separate back-face stencil is GL 2.0)
+  // GL 2.1 §4.1.5: back-facing polygons (also drawn as points or lines by the polygon mode)
+  // use the back face's state; every other fragment the front face's.
+  StencilFace stencil;      // front
+  StencilFace stencil_back; // back
 
   bool depth_test = false;
   GLenum depth_func = GL_LESS;

@@ -106,11 +106,21 @@ void point(const DrawCall& dc, const FragCtx& ctx, const PVertex& p) {
 
 } // namespace
 
-void raster_point(const DrawCall& dc, const PVertex& p) {
-  if (dc.frag != nullptr) return point(dc, *dc.frag, p);
-  FragCtx ctx;
-  prepare_fragments(*dc.state, *dc.fb, ctx);
-  point(dc, ctx, p);
+void raster_point(const DrawCall& dc, const PVertex& p, bool back_facing) {
+  FragCtx local;
+  const FragCtx* ctx = dc.frag;
+  if (ctx == nullptr) {
+    prepare_fragments(*dc.state, *dc.fb, local);
+    ctx = &local;
+  }
+  if (back_facing && ctx->key.stencil_test) {
+    // GL 2.1 §4.1.5: a vertex of a back-facing polygon in POINT mode (see raster_line).
+    const FragCtx back = with_back_stencil(*ctx);
+    point(dc, back, p);
+    ctx->samples_passed += back.samples_passed;
+    return;
+  }
+  point(dc, *ctx, p);
 }
 
 } // namespace pineda

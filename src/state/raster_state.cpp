@@ -111,6 +111,7 @@ void derive_raster_state(Context& ctx, uint32_t dirty) {
     // GL 2.1 §4.1.5: without a stencil buffer the test always passes and writes nothing.
     rs.stencil_test = ctx.stencil.test && ctx.fb.stencil != nullptr;
     rs.stencil = ctx.stencil.front;
+    rs.stencil_back = ctx.stencil.back;
     rs.logic_op = cb.color_logic_op;
     rs.logic_op_mode = cb.logic_op;
   }
