@@ -56,6 +56,12 @@ struct RasterModes {
   float point_size_max = kMaxPointSize;
   float point_fade_threshold = 1.0f;
   float point_attenuation[3] = {1.0f, 0.0f, 0.0f};
+  // Point sprites (GL 2.1 §3.3.1): squares of the unrounded size, point_smooth ignored; the
+  // texture coordinates of the units in sprite_coord_replace (bit u: unit u) vary across the
+  // square, t upwards when sprite_lower_left (POINT_SPRITE_COORD_ORIGIN LOWER_LEFT).
+  bool point_sprite = false;
+  bool sprite_lower_left = false;
+  uint8_t sprite_coord_replace = 0;
 
   // Polygons (GL 2.1 §3.5.5 offset, §3.5.2 stipple). Row r of the stipple applies to window
   // rows y with y mod 32 == r; bit c of a row to window columns x with x mod 32 == c.

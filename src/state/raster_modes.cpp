@@ -42,7 +42,8 @@ inline unsigned bit_mask(size_t bit, bool lsb_first) {
 
 bool valid_point_pname(GLenum pname) {
   return pname == GL_POINT_SIZE_MIN || pname == GL_POINT_SIZE_MAX ||
-         pname == GL_POINT_FADE_THRESHOLD_SIZE || pname == GL_POINT_DISTANCE_ATTENUATION;
+         pname == GL_POINT_FADE_THRESHOLD_SIZE || pname == GL_POINT_DISTANCE_ATTENUATION ||
+         pname == GL_POINT_SPRITE_COORD_ORIGIN;
 }
 
 // glPointParameter* with pname validated by the caller and `n` values (3 for the attenuation).
@@ -51,6 +52,17 @@ void point_parameter(Context* ctx, const char* func, GLenum pname, const float* 
   if (pname == GL_POINT_DISTANCE_ATTENUATION) {
     if (s.attenuation[0] == v[0] && s.attenuation[1] == v[1] && s.attenuation[2] == v[2]) return;
     std::copy(v, v + 3, s.attenuation);
+    mark_dirty(ctx, kDirtyRasterMode);
+    return;
+  }
+  if (pname == GL_POINT_SPRITE_COORD_ORIGIN) {
+    // GL 2.1 §3.3: LOWER_LEFT or UPPER_LEFT; another value is INVALID_VALUE (as in Mesa).
+    const GLenum origin = v[0] == static_cast<float>(GL_LOWER_LEFT)   ? GL_LOWER_LEFT
+                          : v[0] == static_cast<float>(GL_UPPER_LEFT) ? GL_UPPER_LEFT
+                                                                      : GL_NONE;
+    if (origin == GL_NONE) return record_error(ctx, GL_INVALID_VALUE, func);
+    if (s.sprite_origin == origin) return;
+    s.sprite_origin = origin;
     mark_dirty(ctx, kDirtyRasterMode);
     return;
   }
@@ -85,6 +97,9 @@ bool get_rasterization(Context& ctx, GLenum pname, QueryValues& out) {
     return true;
   case GL_POINT_FADE_THRESHOLD_SIZE:
     out.floats({point.fade_threshold});
+    return true;
+  case GL_POINT_SPRITE_COORD_ORIGIN:
+    out.ints({double(point.sprite_origin)});
     return true;
   case GL_POINT_DISTANCE_ATTENUATION:
     out.floats(point.attenuation, 3);
@@ -138,6 +153,9 @@ constexpr Capability kRasterizationCaps[] = {
      [](Context& c, unsigned, unsigned) { return &c.polygon.cull_enabled; }},
     {GL_POINT_SMOOTH, 1, CapabilityKind::kServer, kDirtyRasterMode,
      [](Context& c, unsigned, unsigned) { return &c.point.smooth; }},
+    // GL 2.1 §3.3 (ARB_point_sprite).
+    {GL_POINT_SPRITE, 1, CapabilityKind::kServer, kDirtyRasterMode,
+     [](Context& c, unsigned, unsigned) { return &c.point.sprite; }},
     {GL_LINE_SMOOTH, 1, CapabilityKind::kServer, kDirtyRasterMode,
      [](Context& c, unsigned, unsigned) { return &c.line.smooth; }},
     {GL_LINE_STIPPLE, 1, CapabilityKind::kServer, kDirtyRasterMode,
