@@ -8,6 +8,8 @@
 #include "state/api_util.h"
 #include "dispatch.h"
 #include "state/area.h"
+#include "pixel/unpack.h"
+#include "state/pixel_buffer.h"
 
 namespace pineda {
 
@@ -257,8 +259,15 @@ void GLAPIENTRY LineStipple(GLint factor, GLushort pattern) {
 
 void GLAPIENTRY PolygonStipple(const GLubyte* mask) {
   PINEDA_CTX_OUTSIDE("glPolygonStipple");
-  if (mask == nullptr) return;
   const PixelStore& ps = ctx->pixel_store.unpack;
+  // GL 2.1 §3.5.2: from the pixel unpack buffer when one is bound.
+  const void* src = nullptr;
+  if (!unpack_memory(ctx, mask,
+                     client_image_bytes(32, 32, 1, GL_COLOR_INDEX, GL_BITMAP, store_2d(ps)), 1,
+                     "glPolygonStipple", &src))
+    return;
+  mask = static_cast<const GLubyte*>(src);
+  if (mask == nullptr) return;
   const BitmapLayout l = bitmap_layout(ps);
   PolygonStippleGroup& s = ctx->polygon_stipple;
   // GL 2.1 §3.5.2: the first row of the image is the bottom row of the pattern.
@@ -276,10 +285,17 @@ void GLAPIENTRY PolygonStipple(const GLubyte* mask) {
 
 void GLAPIENTRY GetPolygonStipple(GLubyte* mask) {
   PINEDA_CTX_OUTSIDE("glGetPolygonStipple");
-  if (mask == nullptr) return;
-  // GL 2.1 §6.1.5: packed like ReadPixels of a 32x32 bitmap with the pack state; bits of the
-  // destination outside the pattern keep their values.
+  // GL 2.1 §6.1.5: packed like ReadPixels of a 32x32 bitmap with the pack state (into the
+  // pixel pack buffer when one is bound); bits of the destination outside the pattern keep
+  // their values.
   const PixelStore& ps = ctx->pixel_store.pack;
+  void* dst = nullptr;
+  if (!pack_memory(ctx, mask,
+                   client_image_bytes(32, 32, 1, GL_COLOR_INDEX, GL_BITMAP, store_2d(ps)), 1,
+                   "glGetPolygonStipple", &dst))
+    return;
+  mask = static_cast<GLubyte*>(dst);
+  if (mask == nullptr) return;
   const BitmapLayout l = bitmap_layout(ps);
   const PolygonStippleGroup& s = ctx->polygon_stipple;
   for (int r = 0; r < 32; ++r) {

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "state/api_util.h"
+#include "state/pixel_buffer.h"
 #include "dispatch.h"
 #include "pixel/unpack.h"
 #include "state/tex_format.h"
@@ -152,6 +153,12 @@ void tex_image(const char* func, int dims, GLenum target, GLint level, GLint int
   TexImage im;
   set_image_info(im, GLenum(internalformat), info, w, h, d, border);
   const size_t count = size_t(w) * size_t(h) * size_t(d);
+  // §3.8.1: from the pixel unpack buffer when one is bound.
+  if (!unpack_memory(
+          ctx, pixels,
+          client_image_bytes(w, h, d, format, type, store_for(ctx->pixel_store.unpack, dims)),
+          pixel_type_unit(type), func, &pixels))
+    return;
   try {
     if (info.depth) {
       im.z.assign(count, 0.0f);
@@ -186,7 +193,14 @@ void tex_sub_image(const char* func, int dims, GLenum target, GLint level, GLint
   if (im->is_depth != (format == GL_DEPTH_COMPONENT))
     return record_error(ctx, GL_INVALID_OPERATION, func);
   const size_t count = size_t(w) * size_t(h) * size_t(d);
-  if (count == 0 || pixels == nullptr) return;
+  if (count == 0) return;
+  // §3.8.2: from the pixel unpack buffer when one is bound.
+  if (!unpack_memory(
+          ctx, pixels,
+          client_image_bytes(w, h, d, format, type, store_for(ctx->pixel_store.unpack, dims)),
+          pixel_type_unit(type), func, &pixels))
+    return;
+  if (pixels == nullptr) return;
   try {
     unpack_into(ctx, *im, dims, x, y, z, w, h, d, format, type, pixels);
   } catch (const std::bad_alloc&) {
@@ -518,6 +532,12 @@ void GLAPIENTRY GetTexImage(GLenum target, GLint level, GLenum format, GLenum ty
   if (im.width == 0) return;
   if (im.is_depth != (format == GL_DEPTH_COMPONENT))
     return record_error(ctx, GL_INVALID_OPERATION, "glGetTexImage");
+  // §6.1.4: into the pixel pack buffer when one is bound.
+  if (!pack_memory(ctx, pixels,
+                   client_image_bytes(im.width, im.height, im.depth, format, type,
+                                      store_for(ctx->pixel_store.pack, dims)),
+                   pixel_type_unit(type), "glGetTexImage", &pixels))
+    return;
   if (pixels == nullptr) return;
   const size_t count = size_t(im.width) * size_t(im.height) * size_t(im.depth);
   try {
