@@ -355,6 +355,7 @@ void set_image_info(TexImage& im, GLenum internalformat, const TexFormatInfo& f,
   im.internal_format = uncompressed_internal_format(internalformat); // §3.8.1
   im.base = f.base;
   im.is_depth = f.depth;
+  im.srgb = f.srgb;
   im.red_size = f.r, im.green_size = f.g, im.blue_size = f.b, im.alpha_size = f.a;
   im.luminance_size = f.l, im.intensity_size = f.i, im.depth_size = f.d;
 }
