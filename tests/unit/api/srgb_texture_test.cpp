@@ -183,4 +183,25 @@ TEST_F(SrgbTexture, MipmapLevelsMustMatch) {
   EXPECT_EQ(glGetError(), static_cast<GLenum>(GL_NO_ERROR));
 }
 
+// GENERATE_MIPMAP of an sRGB image filters in linear space: black and white average to linear
+// 0.5, which encodes as 188 (Mesa gives 187); alpha is linear. A linear image averages to 128.
+TEST_F(SrgbTexture, GeneratedLevelsAreFilteredInLinearSpace) {
+  const GLubyte img[2 * 2 * 4] = {0, 0, 0, 255, 255, 255, 255, 0, 0, 0, 0, 255, 255, 255, 255, 0};
+  GLuint t = 0;
+  glGenTextures(1, &t);
+  glBindTexture(GL_TEXTURE_2D, t);
+  glTexParameteri(GL_TEXTURE_2D, GL_GENERATE_MIPMAP, GL_TRUE);
+  GLubyte out[4] = {};
+  glTexImage2D(GL_TEXTURE_2D, 0, GL_SRGB8_ALPHA8, 2, 2, 0, GL_RGBA, GL_UNSIGNED_BYTE, img);
+  glGetTexImage(GL_TEXTURE_2D, 1, GL_RGBA, GL_UNSIGNED_BYTE, out);
+  for (int c = 0; c < 3; ++c)
+    EXPECT_NEAR(out[c], 188, 1) << c;
+  EXPECT_NEAR(out[3], 128, 1);
+  glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, 2, 2, 0, GL_RGBA, GL_UNSIGNED_BYTE, img);
+  glGetTexImage(GL_TEXTURE_2D, 1, GL_RGBA, GL_UNSIGNED_BYTE, out);
+  EXPECT_NEAR(out[0], 128, 1);
+  glDeleteTextures(1, &t);
+  EXPECT_EQ(glGetError(), static_cast<GLenum>(GL_NO_ERROR));
+}
+
 } // namespace
