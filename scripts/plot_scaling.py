@@ -27,7 +27,7 @@ def read_run(directory):
     with open(os.path.join(directory, "manifest.tsv")) as f:
         for line in f:
             fields = line.rstrip("\n").split("\t")
-            if len(fields) == 10:
+            if len(fields) >= 10:
                 desc[fields[0]] = fields
     points = []
     with open(os.path.join(directory, "driver.csv")) as f:

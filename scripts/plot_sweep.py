@@ -54,7 +54,7 @@ def read_manifest(path):
     with open(path) as f:
         for line in f:
             fields = line.rstrip("\n").split("\t")
-            if len(fields) == 10:
+            if len(fields) >= 10:
                 desc[fields[0]] = fields[9]
     return desc
 

@@ -64,6 +64,7 @@ void usage(std::FILE* to) {
 
 struct ManifestEntry {
   std::string name, format, oracle, why, description;
+  std::string gl_version; // Mesa runs with MESA_GL_VERSION_OVERRIDE=gl_version when not empty
   int width = 0, height = 0, depth_bits = 0;
   bool y_up = true;
   double allowance = 0.5;
@@ -89,10 +90,12 @@ std::string last_line(const std::string& text) {
   return last;
 }
 
-EnvChanges mesa_env(const Options& o, const char* driver) {
+EnvChanges mesa_env(const Options& o, const char* driver, const std::string& gl_version = "") {
   EnvChanges env{{"LD_LIBRARY_PATH", std::nullopt}, {"LD_PRELOAD", std::nullopt},
                  {"GALLIUM_DRIVER", std::string(driver)}};
   if (o.threads > 0) env.push_back({"LP_NUM_THREADS", std::to_string(o.threads)});
+  // A scene of a newer GL version is drawn by Mesa as a context of that version.
+  if (!gl_version.empty()) env.push_back({"MESA_GL_VERSION_OVERRIDE", gl_version});
   return env;
 }
 
@@ -106,7 +109,7 @@ bool read_manifest(const Options& o, std::vector<ManifestEntry>& manifest) {
   std::istringstream in(run.out);
   for (std::string line; std::getline(in, line);) {
     const auto f = split(line, '\t');
-    if (f.size() != 10) continue;
+    if (f.size() != 11) continue;
     ManifestEntry e;
     e.name = f[0];
     e.width = std::atoi(f[1].c_str());
@@ -118,6 +121,7 @@ bool read_manifest(const Options& o, std::vector<ManifestEntry>& manifest) {
     e.oracle = f[7];
     e.why = f[8];
     e.description = f[9];
+    e.gl_version = f[10];
     manifest.push_back(e);
   }
   if (manifest.empty()) {
@@ -248,11 +252,11 @@ SceneRecord run_scene(const Options& o, const ManifestEntry& scene) {
   } else {
     run_impl(o, scene, pineda, dir, r.pineda, pineda_image);
   }
-  run_impl(o, scene, Impl{"llvmpipe", "llvmpipe", mesa_env(o, "llvmpipe")}, dir, r.llvmpipe,
+  run_impl(o, scene, Impl{"llvmpipe", "llvmpipe", mesa_env(o, "llvmpipe", scene.gl_version)}, dir, r.llvmpipe,
            llvmpipe_image);
   // A scene whose oracle is softpipe needs softpipe even under --no-softpipe.
   if (o.softpipe || r.softpipe_oracle())
-    run_impl(o, scene, Impl{"softpipe", "softpipe", mesa_env(o, "softpipe")}, dir, r.softpipe,
+    run_impl(o, scene, Impl{"softpipe", "softpipe", mesa_env(o, "softpipe", scene.gl_version)}, dir, r.softpipe,
              softpipe_image);
 
   // Further rounds, alternating the implementations so that machine noise hits them alike;
@@ -267,10 +271,10 @@ SceneRecord run_scene(const Options& o, const ManifestEntry& scene) {
     fs::create_directories(dir + "/round", ec);
     if (r.pineda.ok) timed.push_back({&r.pineda, pineda, {r.pineda.median_ms}});
     if (r.llvmpipe.ok)
-      timed.push_back({&r.llvmpipe, Impl{"llvmpipe", "llvmpipe", mesa_env(o, "llvmpipe")},
+      timed.push_back({&r.llvmpipe, Impl{"llvmpipe", "llvmpipe", mesa_env(o, "llvmpipe", scene.gl_version)},
                        {r.llvmpipe.median_ms}});
     if (r.softpipe.ok)
-      timed.push_back({&r.softpipe, Impl{"softpipe", "softpipe", mesa_env(o, "softpipe")},
+      timed.push_back({&r.softpipe, Impl{"softpipe", "softpipe", mesa_env(o, "softpipe", scene.gl_version)},
                        {r.softpipe.median_ms}});
     for (int round = 1; round < o.rounds; ++round) {
       for (Timed& t : timed) {

@@ -105,13 +105,13 @@ const char* format_name(GLenum format) {
 
 void print_manifest() {
   // One scene a line: name, width, height, allowance, format, depth bits, y_up, oracle,
-  // justification, description; tab-separated (the strings contain no tabs).
+  // justification, description, GL version; tab-separated (the strings contain no tabs).
   for (const scenes::Scene& s : scenes::all_scenes()) {
     const auto& o = s.options;
-    std::printf("%s\t%d\t%d\t%.4f\t%s\t%d\t%d\t%s\t%s\t%s\n", s.name.c_str(), o.width, o.height,
-                o.allowance, format_name(o.format), o.depth_bits, o.y_up ? 1 : 0,
+    std::printf("%s\t%d\t%d\t%.4f\t%s\t%d\t%d\t%s\t%s\t%s\t%s\n", s.name.c_str(), o.width,
+                o.height, o.allowance, format_name(o.format), o.depth_bits, o.y_up ? 1 : 0,
                 o.softpipe_oracle ? "softpipe" : "llvmpipe", clean(o.why ? o.why : "").c_str(),
-                clean(s.description.c_str()).c_str());
+                clean(s.description.c_str()).c_str(), clean(o.gl_version ? o.gl_version : "").c_str());
   }
 }
 

@@ -39,6 +39,9 @@ struct SceneOptions {
   // Required whenever allowance exceeds the default or softpipe is the oracle: why GL leaves
   // the result open, or what llvmpipe gets wrong.
   const char* why = nullptr;
+  // The GL version whose core the scene uses ("2.1"), when above 1.5: Mesa is run with
+  // MESA_GL_VERSION_OVERRIDE set to it, so that it draws as that version's context would.
+  const char* gl_version = nullptr;
 };
 
 struct Frame {

@@ -56,6 +56,12 @@ struct RasterModes {
   float point_size_max = kMaxPointSize;
   float point_fade_threshold = 1.0f;
   float point_attenuation[3] = {1.0f, 0.0f, 0.0f};
+  // Point sprites (GL 2.1 §3.3.1): squares of the unrounded size, point_smooth ignored; the
+  // texture coordinates of the units in sprite_coord_replace (bit u: unit u) vary across the
+  // square, t upwards when sprite_lower_left (POINT_SPRITE_COORD_ORIGIN LOWER_LEFT).
+  bool point_sprite = false;
+  bool sprite_lower_left = false;
+  uint8_t sprite_coord_replace = 0;
 
   // Polygons (GL 2.1 §3.5.5 offset, §3.5.2 stipple). Row r of the stipple applies to window
   // rows y with y mod 32 == r; bit c of a row to window columns x with x mod 32 == c.
@@ -131,7 +137,10 @@ struct RasterState {
   float alpha_ref = 0.0f; // clamped to [0,1] by glAlphaFunc (§4.1.4)
 
   bool stencil_test = false;
-  StencilFace stencil; // the front face's (separate back-face stencil is GL 2.0)
+  // GL 2.1 §4.1.5: back-facing polygons (also drawn as points or lines by the polygon mode)
+  // use the back face's state; every other fragment the front face's.
+  StencilFace stencil;      // front
+  StencilFace stencil_back; // back
 
   bool depth_test = false;
   GLenum depth_func = GL_LESS;

@@ -22,7 +22,8 @@ void DepthStencilSnapshot::save(const Framebuffer& fb, const RasterState& rs,
     for (int y = region_.y0; y < region_.y1; ++y)
       std::copy_n(fb.depth + at(y), w, depth_.data() + static_cast<size_t>(y - region_.y0) * w);
   }
-  if (fb.stencil != nullptr && rs.stencil_test && (rs.stencil.writemask & 0xffu) != 0) {
+  if (fb.stencil != nullptr && rs.stencil_test &&
+      ((rs.stencil.writemask | rs.stencil_back.writemask) & 0xffu) != 0) {
     stencil_.resize(w * rows);
     for (int y = region_.y0; y < region_.y1; ++y)
       std::copy_n(fb.stencil + at(y), w, stencil_.data() + static_cast<size_t>(y - region_.y0) * w);

@@ -24,10 +24,10 @@ public:
     const float zmax = std::max({a.win[2], b.win[2], c.win[2]});
     records_.hit(zmin, zmax);
   }
-  void line(const PVertex& a, const PVertex& b, const PVertex&) override {
+  void line(const PVertex& a, const PVertex& b, const PVertex&, bool) override {
     records_.hit(std::min(a.win[2], b.win[2]), std::max(a.win[2], b.win[2]));
   }
-  void point(const PVertex& p) override { records_.hit(p.win[2], p.win[2]); }
+  void point(const PVertex& p, bool) override { records_.hit(p.win[2], p.win[2]); }
 
 private:
   RenderRecords& records_;
@@ -51,13 +51,13 @@ public:
     vertex(b, pv);
     vertex(c, pv);
   }
-  void line(const PVertex& a, const PVertex& b, const PVertex& pv) override {
+  void line(const PVertex& a, const PVertex& b, const PVertex& pv, bool) override {
     records_.value(static_cast<float>(reset_ ? GL_LINE_RESET_TOKEN : GL_LINE_TOKEN));
     reset_ = false;
     vertex(a, pv);
     vertex(b, pv);
   }
-  void point(const PVertex& p) override {
+  void point(const PVertex& p, bool) override {
     records_.value(static_cast<float>(GL_POINT_TOKEN));
     vertex(p, p);
   }

@@ -727,12 +727,13 @@ unsigned stencil_depth_row(const FragCtx& ctx, const FragInputs& in, int bx, int
     for (int i = 0; i < N; ++i)
       if ((m >> i) & 1u) old[i] = st[i];
   }
+  const StencilSide& side = ctx.stencil_side[in.back_facing];
   const i32x4 v[2] = {{old[0], old[1], old[2], old[3]}, {old[4], old[5], old[6], old[7]}};
-  const i32x4 zero = {}, vm = zero + ctx.stencil_value_mask, ref = zero + ctx.stencil_ref;
+  const i32x4 zero = {}, vm = zero + side.value_mask, ref = zero + side.ref;
   const i32x4 masked_ref = ref & vm;
-  const i32x4 lt = zero - static_cast<int32_t>(ctx.stencil_func & 1u);
-  const i32x4 eq = zero - static_cast<int32_t>((ctx.stencil_func >> 1) & 1u);
-  const i32x4 gt = zero - static_cast<int32_t>((ctx.stencil_func >> 2) & 1u);
+  const i32x4 lt = zero - static_cast<int32_t>(side.func & 1u);
+  const i32x4 eq = zero - static_cast<int32_t>((side.func >> 1) & 1u);
+  const i32x4 gt = zero - static_cast<int32_t>((side.func >> 2) & 1u);
   i32x4 pass[2];
   for (int h = 0; h < 2; ++h) {
     const i32x4 sv = v[h] & vm;
@@ -742,8 +743,8 @@ unsigned stencil_depth_row(const FragCtx& ctx, const FragInputs& in, int bx, int
   unsigned zpass = spass;
   if constexpr (D != DepthPath::Off)
     zpass = spass != 0 ? depth_row<D>(ctx, in, bx, y, di, dj, spass) : 0;
-  if (ctx.stencil_write_mask == 0) return zpass;
-  const i32x4 wm = zero + ctx.stencil_write_mask;
+  if (side.write_mask == 0) return zpass;
+  const i32x4 wm = zero + side.write_mask;
   i32x4 sfail[2], dpfail[2], dppass[2];
   bits_to_lanes(m & ~spass, sfail[0], sfail[1]);
   bits_to_lanes(spass & ~zpass, dpfail[0], dpfail[1]);
@@ -751,9 +752,9 @@ unsigned stencil_depth_row(const FragCtx& ctx, const FragInputs& in, int bx, int
   uint8_t out[N];
   for (int h = 0; h < 2; ++h) {
     const i32x4 keep = ~(sfail[h] | dpfail[h] | dppass[h]);
-    const i32x4 nv = (stencil_op_lanes(ctx.stencil_ops[0], v[h], ref) & sfail[h]) |
-                     (stencil_op_lanes(ctx.stencil_ops[1], v[h], ref) & dpfail[h]) |
-                     (stencil_op_lanes(ctx.stencil_ops[2], v[h], ref) & dppass[h]) | (v[h] & keep);
+    const i32x4 nv = (stencil_op_lanes(side.ops[0], v[h], ref) & sfail[h]) |
+                     (stencil_op_lanes(side.ops[1], v[h], ref) & dpfail[h]) |
+                     (stencil_op_lanes(side.ops[2], v[h], ref) & dppass[h]) | (v[h] & keep);
     const i32x4 w = (v[h] & ~wm) | (nv & wm);
     for (int k = 0; k < 4; ++k)
       out[4 * h + k] = static_cast<uint8_t>(w[k]);

@@ -44,14 +44,19 @@ void prepare_ext(const RasterState& rs, const Framebuffer& fb, FragCtx& ctx) {
   }
   if (k.stencil_test) {
     ctx.stencil = fb.stencil;
-    ctx.stencil_func = depth_func_bits(rs.stencil.func);
-    // GL 2.1 §4.1.5: the reference is clamped to [0, 2^s - 1]; masks use the low s bits.
-    ctx.stencil_ref = static_cast<uint8_t>(std::clamp(rs.stencil.ref, 0, 255));
-    ctx.stencil_value_mask = static_cast<uint8_t>(rs.stencil.value_mask & 0xffu);
-    ctx.stencil_write_mask = static_cast<uint8_t>(rs.stencil.writemask & 0xffu);
-    ctx.stencil_ops[0] = stencil_op_from_gl(rs.stencil.fail);
-    ctx.stencil_ops[1] = stencil_op_from_gl(rs.stencil.depth_fail);
-    ctx.stencil_ops[2] = stencil_op_from_gl(rs.stencil.depth_pass);
+    const StencilFace* faces[2] = {&rs.stencil, &rs.stencil_back};
+    for (int i = 0; i < 2; ++i) {
+      const StencilFace& f = *faces[i];
+      StencilSide& side = ctx.stencil_side[i];
+      side.func = depth_func_bits(f.func);
+      // GL 2.1 §4.1.5: the reference is clamped to [0, 2^s - 1]; masks use the low s bits.
+      side.ref = static_cast<uint8_t>(std::clamp(f.ref, 0, 255));
+      side.value_mask = static_cast<uint8_t>(f.value_mask & 0xffu);
+      side.write_mask = static_cast<uint8_t>(f.writemask & 0xffu);
+      side.ops[0] = stencil_op_from_gl(f.fail);
+      side.ops[1] = stencil_op_from_gl(f.depth_fail);
+      side.ops[2] = stencil_op_from_gl(f.depth_pass);
+    }
   }
   if (k.logic_op) ctx.logic = logic_masks(rs.logic_op_mode);
 }

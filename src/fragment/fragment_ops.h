@@ -31,6 +31,15 @@ struct PlaneD {
   double v0 = 0, dx = 0, dy = 0;
 };
 
+// One face's stencil test and update (GL 2.1 §4.1.5) as the block loops read them.
+struct StencilSide {
+  uint8_t func = 0; // depth_func_bits encoding
+  uint8_t ref = 0;  // clamped to [0, 255]
+  uint8_t value_mask = 0xff;
+  uint8_t write_mask = 0xff;
+  StencilOp ops[3] = {}; // stencil fails, depth fails, depth passes
+};
+
 struct ShadeInputs; // fragment/shade.h
 struct ShadeSetup;  // fragment/shade.h
 
@@ -46,6 +55,9 @@ struct FragInputs {
   PlaneF color_w[4];
   uint8_t const_color[4] = {0, 0, 0, 0}; // RGBA for ShadePath::Const
   const ShadeInputs* shade = nullptr;    // planes for ShadePath::PerFragment
+  // Fragments of a back-facing polygon: the stencil test uses the back face's state (GL 2.1
+  // §4.1.5); 0 for every other primitive.
+  uint8_t back_facing = 0;
 };
 
 struct FragCtx;
@@ -68,11 +80,8 @@ struct FragCtx {
   uint8_t alpha_func = 0;     // depth_func_bits encoding (GL 2.1 §4.1.4)
   uint8_t alpha_ref = 0;      // the reference as 8-bit fixed point (§2.14.9)
   uint8_t* stencil = nullptr; // row 0 at the bottom, stride fb_width
-  uint8_t stencil_func = 0;   // depth_func_bits encoding (§4.1.5)
-  uint8_t stencil_ref = 0;    // clamped to [0, 255]
-  uint8_t stencil_value_mask = 0xff;
-  uint8_t stencil_write_mask = 0xff;
-  StencilOp stencil_ops[3] = {}; // stencil fails, depth fails, depth passes
+  // Front [0] and back [1] stencil state (§4.1.5), indexed by FragInputs::back_facing.
+  StencilSide stencil_side[2];
   LogicMasks logic;
   // Fragments outside this rectangle (inclusive) are never produced: the framebuffer,
   // intersected with the scissor box when the scissor test is on (GL 2.1 §4.1.2).
@@ -94,6 +103,16 @@ struct FragCtx {
 
 // Fills ctx for one draw: the key, the surfaces and the selected block loops.
 void prepare_fragments(const RasterState& rs, const Framebuffer& fb, FragCtx& ctx);
+
+// A copy of `ctx` whose front stencil state is the back face's and which has counted no
+// samples yet: for the lines and points outlining a back-facing polygon (GL 2.1 §4.1.5), which
+// the rasterizers draw with the front state.
+inline FragCtx with_back_stencil(const FragCtx& ctx) {
+  FragCtx back = ctx;
+  back.stencil_side[0] = back.stencil_side[1];
+  back.samples_passed = 0;
+  return back;
+}
 
 // The block loop for a key and shade path at the current simd_level() (exposed for tests).
 BlockFn select_block_fn(const StateKey& key, ShadePath shade);

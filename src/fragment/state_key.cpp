@@ -25,11 +25,14 @@ StateKey make_state_key(const RasterState& rs, const Framebuffer& fb) {
   k.count_samples = rs.count_samples;
   // GL 2.1 §4.1.5: without a stencil buffer the test always passes and nothing is written.
   // A test that always passes and never writes is the same as no test.
-  const bool stencil_writes = (rs.stencil.writemask & 0xffu) != 0 &&
-                              (rs.stencil.fail != GL_KEEP || rs.stencil.depth_fail != GL_KEEP ||
-                               rs.stencil.depth_pass != GL_KEEP);
+  // Either face's state may decide (§4.1.5, back-facing polygons use the back face's).
+  const auto face_acts = [](const StencilFace& f) {
+    const bool writes = (f.writemask & 0xffu) != 0 &&
+                        (f.fail != GL_KEEP || f.depth_fail != GL_KEEP || f.depth_pass != GL_KEEP);
+    return f.func != GL_ALWAYS || writes;
+  };
   k.stencil_test = rs.stencil_test && fb.stencil != nullptr && fb.stencil_bits > 0 &&
-                   (rs.stencil.func != GL_ALWAYS || stencil_writes);
+                   (face_acts(rs.stencil) || face_acts(rs.stencil_back));
   if (rs.logic_op) {
     // GL 2.1 §4.1.10: the logical operation replaces blending; COPY stores the source.
     k.logic_op = k.color_mask != 0 && rs.logic_op_mode != GL_COPY;

@@ -53,10 +53,10 @@ struct RasterSink {
                         const PVertex& provoking, bool back) {
     raster_triangle_snapped(dc, t, a, b, c, provoking, back);
   }
-  void line(const PVertex& a, const PVertex& b, const PVertex& provoking) {
-    raster_line(dc, a, b, provoking);
+  void line(const PVertex& a, const PVertex& b, const PVertex& provoking, bool back) {
+    raster_line(dc, a, b, provoking, back);
   }
-  void point(const PVertex& p) { raster_point(dc, p); }
+  void point(const PVertex& p, bool back) { raster_point(dc, p, back); }
 };
 
 // Binned draws (raster/bin.h): setup into the calling thread's bins.
@@ -73,10 +73,10 @@ struct BinSink {
     bin_triangle(bins, dc, t, a, b, c, provoking, back);
   }
   // Only draws that fill both faces are binned (draw_primitives): no outline reaches here.
-  void line(const PVertex&, const PVertex&, const PVertex&) {
+  void line(const PVertex&, const PVertex&, const PVertex&, bool) {
     assert(false && "binned draws have no lines");
   }
-  void point(const PVertex&) { assert(false && "binned draws have no points"); }
+  void point(const PVertex&, bool) { assert(false && "binned draws have no points"); }
 };
 
 // The units a triangle mode's primitives are counted in, for splitting a draw among threads:
@@ -129,14 +129,14 @@ private:
   void point(const PVertex& p) {
     // GL 2.1 §2.12: a point is passed iff it lies inside the clip volume. A clip code of zero
     // also keeps it inside the guard band with w > 0.
-    if (p.clipmask == 0) sink_.point(p);
+    if (p.clipmask == 0) sink_.point(p, false);
   }
 
   // Segment a-b; GL 2.1 §2.14.7: the second vertex provokes.
   void line(const PVertex& a, const PVertex& b) {
     if ((a.clipmask & b.clipmask & kClipRejectMask) != 0) return;
     if ((a.clipmask | b.clipmask) == 0) {
-      sink_.line(a, b, b);
+      sink_.line(a, b, b, false);
       return;
     }
     line_clipped(a, b);
@@ -236,7 +236,7 @@ template <class Sink>
                     &cb))
     return;
   // The original second vertex keeps supplying the flat colour.
-  sink_.line(*ca, *cb, b);
+  sink_.line(*ca, *cb, b, false);
 }
 
 template <class Sink>

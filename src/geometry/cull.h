@@ -109,7 +109,7 @@ void emit_polygon(const FaceState& fs, Sink& sink, const PVertex* const* v, cons
       sink.triangle(*vs[0], *vs[i], *vs[i + 1], *prov, back);
   } else if (mode == GL_LINE) {
     for (int k = 0, i = first_edge; k < n; ++k, i = (i + 1 == n) ? 0 : i + 1)
-      if (edge[i]) sink.line(*vs[i], *vs[i + 1 == n ? 0 : i + 1], *prov);
+      if (edge[i]) sink.line(*vs[i], *vs[i + 1 == n ? 0 : i + 1], *prov, back);
   } else if (mode == GL_POINT) {
     for (int i = 0; i < n; ++i) {
       if (!edge[i]) continue;
@@ -117,9 +117,9 @@ void emit_polygon(const FaceState& fs, Sink& sink, const PVertex* const* v, cons
         PVertex p;
         copy_vertex(fs, p, *vs[i]);
         copy_flat_colors(p, *prov);
-        sink.point(p);
+        sink.point(p, back);
       } else {
-        sink.point(*vs[i]);
+        sink.point(*vs[i], back);
       }
     }
   }
@@ -136,8 +136,11 @@ public:
   virtual ~PrimitiveSink() = default;
   virtual void triangle(const PVertex& a, const PVertex& b, const PVertex& c,
                         const PVertex& provoking, bool back_facing) = 0;
-  virtual void line(const PVertex& a, const PVertex& b, const PVertex& provoking) = 0;
-  virtual void point(const PVertex& p) = 0;
+  // back_facing: an outline of a back-facing polygon (emit_polygon), false for lines and
+  // points of their own.
+  virtual void line(const PVertex& a, const PVertex& b, const PVertex& provoking,
+                    bool back_facing) = 0;
+  virtual void point(const PVertex& p, bool back_facing) = 0;
 };
 
 } // namespace pineda

@@ -42,8 +42,11 @@ struct DrawCall {
 // raster_triangle does not cull; it fills whatever winding it is given.
 void raster_triangle(const DrawCall& dc, const PVertex& a, const PVertex& b, const PVertex& c,
                      const PVertex& provoking, bool back_facing);
-void raster_line(const DrawCall& dc, const PVertex& a, const PVertex& b, const PVertex& provoking);
-void raster_point(const DrawCall& dc, const PVertex& p);
+// `back_facing`: the line or point outlines a back-facing polygon (polygon mode LINE or
+// POINT), whose fragments take the back face's stencil state (GL 2.1 §4.1.5).
+void raster_line(const DrawCall& dc, const PVertex& a, const PVertex& b, const PVertex& provoking,
+                 bool back_facing = false);
+void raster_point(const DrawCall& dc, const PVertex& p, bool back_facing = false);
 
 // Fixed-point window coordinate as the rasterizer and the culling test both see it:
 // round to nearest 1/256 pixel.

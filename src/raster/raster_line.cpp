@@ -397,11 +397,23 @@ void any_line(const DrawCall& dc, const FragCtx& ctx, const PVertex& a, const PV
 
 } // namespace
 
-void raster_line(const DrawCall& dc, const PVertex& a, const PVertex& b, const PVertex& provoking) {
-  if (dc.frag != nullptr) return any_line(dc, *dc.frag, a, b, provoking);
-  FragCtx ctx;
-  prepare_fragments(*dc.state, *dc.fb, ctx);
-  any_line(dc, ctx, a, b, provoking);
+void raster_line(const DrawCall& dc, const PVertex& a, const PVertex& b, const PVertex& provoking,
+                 bool back_facing) {
+  FragCtx local;
+  const FragCtx* ctx = dc.frag;
+  if (ctx == nullptr) {
+    prepare_fragments(*dc.state, *dc.fb, local);
+    ctx = &local;
+  }
+  if (back_facing && ctx->key.stencil_test) {
+    // GL 2.1 §4.1.5: the outline of a back-facing polygon is still a polygon for the stencil
+    // test; a copy of the fragment set-up with the back state in the front's place.
+    const FragCtx back = with_back_stencil(*ctx);
+    any_line(dc, back, a, b, provoking);
+    ctx->samples_passed += back.samples_passed;
+    return;
+  }
+  any_line(dc, *ctx, a, b, provoking);
 }
 
 } // namespace pineda

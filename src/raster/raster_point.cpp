@@ -68,10 +68,46 @@ void smooth_point(const FragCtx& ctx, const Bands& bands, const RasterModes& m, 
   }
 }
 
+// GL 2.1 §3.3.1: a point sprite is every pixel whose centre lies inside the square of side
+// `size` centred on the point (the left and bottom edges owned, as for polygons, and as
+// llvmpipe draws sprites), all with the point's data but the replaced texture coordinates.
+void sprite_point(const DrawCall& dc, const FragCtx& ctx, const RasterModes& m, const PVertex& p,
+                  float size) {
+  if (!(size > 0.0f)) return;
+  const double h = 0.5 * size;
+  const double x = p.win[0], y = p.win[1];
+  const double fx0 = std::ceil(x - h - 0.5), fx1 = std::ceil(x + h - 0.5) - 1;
+  const double fy0 = std::ceil(y - h - 0.5), fy1 = std::ceil(y + h - 0.5) - 1;
+  // Reject squares outside the clip rectangle before converting to int.
+  if (!(fx1 >= ctx.clip_x0 && fx0 <= ctx.clip_x1 && fy1 >= ctx.clip_y0 && fy0 <= ctx.clip_y1))
+    return;
+  const int x0 = static_cast<int>(std::max<double>(fx0, ctx.clip_x0 - 1.0));
+  const int y0 = static_cast<int>(std::max<double>(fy0, ctx.clip_y0 - 1.0));
+  const int x1 = static_cast<int>(std::min<double>(fx1, ctx.clip_x1 + 1.0));
+  const int y1 = static_cast<int>(std::min<double>(fy1, ctx.clip_y1 + 1.0));
+  if (x0 > x1 || y0 > y1) return;
+  if (!dc.bands.owns_any(std::max(y0, ctx.clip_y0), std::min(y1, ctx.clip_y1))) return;
+  FragInputs in;
+  in.ox = x0;
+  in.oy = y0;
+  in.z.v0 = p.win[2] * ctx.depth_max;
+  const_color(p, kAttrColor, in.const_color);
+  ShadeInputs si;
+  ShadePath shade = ShadePath::Const;
+  if (ctx.shade != nullptr) {
+    setup_shade_sprite(*ctx.shade, m, p, size, x0, y0, si);
+    in.shade = &si;
+    shade = ShadePath::PerFragment;
+  }
+  emit_rect(ctx, dc.bands, in, ctx.fn[static_cast<int>(shade)], x0, y0, x1, y1);
+}
+
 void point(const DrawCall& dc, const FragCtx& ctx, const PVertex& p) {
   if (ctx.noop) return;
   const RasterModes& m = dc.state->modes;
   const float size = point_size_of(m, p);
+  // §3.3: with point sprites on, POINT_SMOOTH is ignored.
+  if (m.point_sprite) return sprite_point(dc, ctx, m, p, size);
   if (m.point_smooth) return smooth_point(ctx, dc.bands, m, p, size);
   // Round to the nearest integer, halves down, at least 1 (llvmpipe's legacy points).
   int w = 1;
@@ -106,11 +142,21 @@ void point(const DrawCall& dc, const FragCtx& ctx, const PVertex& p) {
 
 } // namespace
 
-void raster_point(const DrawCall& dc, const PVertex& p) {
-  if (dc.frag != nullptr) return point(dc, *dc.frag, p);
-  FragCtx ctx;
-  prepare_fragments(*dc.state, *dc.fb, ctx);
-  point(dc, ctx, p);
+void raster_point(const DrawCall& dc, const PVertex& p, bool back_facing) {
+  FragCtx local;
+  const FragCtx* ctx = dc.frag;
+  if (ctx == nullptr) {
+    prepare_fragments(*dc.state, *dc.fb, local);
+    ctx = &local;
+  }
+  if (back_facing && ctx->key.stencil_test) {
+    // GL 2.1 §4.1.5: a vertex of a back-facing polygon in POINT mode (see raster_line).
+    const FragCtx back = with_back_stencil(*ctx);
+    point(dc, back, p);
+    ctx->samples_passed += back.samples_passed;
+    return;
+  }
+  point(dc, *ctx, p);
 }
 
 } // namespace pineda

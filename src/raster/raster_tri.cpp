@@ -246,6 +246,7 @@ setup_triangle(const DrawCall& dc, const FragCtx& ctx, const SnappedTri& t, cons
   FragInputs& in = out.inputs();
   const PlaneSetup ps = make_plane_setup(t);
   ShadePath shade = setup_triangle_inputs(ctx, ps, a, b, c, provoking, rs.flat, slot, in);
+  in.back_facing = back_facing ? 1 : 0; // GL 2.1 §4.1.5: the back face's stencil state
   // GL 2.1 §3.5.5: the offset moves the whole depth plane (the fragment stage clamps).
   if (modes.offset_fill && ctx.needs_depth)
     in.z.v0 += polygon_offset_depth(modes, in.z.dx, in.z.dy, ctx.depth_max);

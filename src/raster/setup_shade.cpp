@@ -92,4 +92,22 @@ void setup_shade_point(const ShadeSetup& ss, const PVertex& p, ShadeInputs& out)
   const_colors(ss, p, kAttrColor, out);
 }
 
+void setup_shade_sprite(const ShadeSetup& ss, const RasterModes& modes, const PVertex& p,
+                        float size, int ox, int oy, ShadeInputs& out) {
+  setup_shade_point(ss, p, out);
+  const double inv = 1.0 / size;
+  const double s0 = 0.5 + (ox + 0.5 - static_cast<double>(p.win[0])) * inv;
+  const double t_up = (oy + 0.5 - static_cast<double>(p.win[1])) * inv;
+  const double t0 = modes.sprite_lower_left ? 0.5 + t_up : 0.5 - t_up;
+  const double dt = modes.sprite_lower_left ? inv : -inv;
+  for (int k = 0; k < ss.unit_count; ++k) {
+    const int u = ss.unit[k].index;
+    if (!((modes.sprite_coord_replace >> u) & 1u)) continue;
+    out.tex_w[u][0] = PlaneF{static_cast<float>(s0), static_cast<float>(inv), 0.0f};
+    out.tex_w[u][1] = PlaneF{static_cast<float>(t0), 0.0f, static_cast<float>(dt)};
+    out.tex_w[u][2] = PlaneF{0.0f, 0.0f, 0.0f};
+    out.tex_w[u][3] = PlaneF{1.0f, 0.0f, 0.0f};
+  }
+}
+
 } // namespace pineda

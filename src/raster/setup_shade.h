@@ -22,4 +22,11 @@ void setup_shade_line(const ShadeSetup& ss, const PVertex& a, const PVertex& b,
 // Point: every value constant.
 void setup_shade_point(const ShadeSetup& ss, const PVertex& p, ShadeInputs& out);
 
+// A point sprite of side `size` whose fragments start at pixel (ox, oy) (GL 2.1 §3.3.1): as
+// setup_shade_point, but the units of modes.sprite_coord_replace get the sprite coordinates
+// s = 1/2 + (x_f + 1/2 - x_w) / size, t likewise in y (negated for the UPPER_LEFT origin),
+// r = 0, q = 1 (eqs. 3.3, 3.4).
+void setup_shade_sprite(const ShadeSetup& ss, const RasterModes& modes, const PVertex& p,
+                        float size, int ox, int oy, ShadeInputs& out);
+
 } // namespace pineda

@@ -16,6 +16,11 @@ GLuint* binding_for(Context* ctx, GLenum target) {
     return &ctx->arrays.array_buffer;
   case GL_ELEMENT_ARRAY_BUFFER:
     return &ctx->arrays.element_array_buffer;
+  // GL 2.1 §2.9 (ARB_pixel_buffer_object): the sources and destinations of pixel commands.
+  case GL_PIXEL_PACK_BUFFER:
+    return &ctx->pixel_store.pack_buffer;
+  case GL_PIXEL_UNPACK_BUFFER:
+    return &ctx->pixel_store.unpack_buffer;
   default:
     return nullptr;
   }
@@ -97,6 +102,8 @@ void GLAPIENTRY DeleteBuffers(GLsizei n, const GLuint* buffers) {
     // GL 1.5 §2.9: bindings of a deleted buffer revert to zero, array bindings included.
     if (ctx->arrays.array_buffer == name) ctx->arrays.array_buffer = 0;
     if (ctx->arrays.element_array_buffer == name) ctx->arrays.element_array_buffer = 0;
+    if (ctx->pixel_store.pack_buffer == name) ctx->pixel_store.pack_buffer = 0;
+    if (ctx->pixel_store.unpack_buffer == name) ctx->pixel_store.unpack_buffer = 0;
     VertexArrayGroup& a = ctx->arrays;
     for (ClientArray* arr : {&a.vertex, &a.color, &a.normal, &a.edgeflag, &a.texcoord[0],
                              &a.texcoord[1], &a.texcoord[2], &a.texcoord[3], &a.secondary, &a.fog})

@@ -7,7 +7,9 @@
 #include "dispatch.h"
 #include "framebuffer/read_pixels.h"
 #include "raster/schedule.h"
+#include "pixel/unpack.h"
 #include "state/pixel.h"
+#include "state/pixel_buffer.h"
 
 namespace pineda {
 
@@ -164,6 +166,11 @@ void GLAPIENTRY ReadPixels(GLint x, GLint y, GLsizei w, GLsizei h, GLenum format
     return record_error(ctx, GL_INVALID_OPERATION, "glReadPixels");
   if (format == GL_STENCIL_INDEX && ctx->fb.stencil == nullptr)
     return record_error(ctx, GL_INVALID_OPERATION, "glReadPixels");
+  // GL 2.1 §4.3.2: into the pixel pack buffer when one is bound.
+  const PixelStore& st = ctx->pixel_store.pack;
+  if (!pack_memory(ctx, pixels, client_image_bytes(w, h, 1, format, type, store_2d(st)),
+                   pixel_type_unit(type), "glReadPixels", &pixels))
+    return;
   if (pixels == nullptr || w == 0 || h == 0 || ctx->fb.color == nullptr) return;
   if (read_pixels_transfer(ctx, x, y, w, h, format, type, pixels)) return;
   read_pixels(read_view(ctx->fb), x, y, w, h, format, type, ctx->pixel_store.pack, pixels);

@@ -19,6 +19,7 @@
 #include "dispatch.h"
 #include "pixel/unpack.h"
 #include "state/dlist_internal.h"
+#include "state/pixel_buffer.h"
 #include "state/texture_internal.h"
 
 namespace pineda {
@@ -107,16 +108,33 @@ void replay_pixel_map(const void* p) {
   // memcpy of nothing still needs valid pointers, which an empty vector has not.
   if (!values.empty())
     std::memcpy(values.data(), static_cast<const char*>(p) + sizeof h, values.size() * sizeof(T));
+  // The values are in the list, whatever buffer is bound to PIXEL_UNPACK_BUFFER now.
+  Context* ctx = current_context();
+  if (ctx == nullptr) return;
+  const GLuint saved_buffer = ctx->pixel_store.unpack_buffer;
+  ctx->pixel_store.unpack_buffer = 0;
   Fn(h.map, h.mapsize, h.copied > 0 ? values.data() : nullptr);
+  ctx->pixel_store.unpack_buffer = saved_buffer;
 }
 
 template <typename T, void(GLAPIENTRY* Fn)(GLenum, GLsizei, const T*)>
-bool save_pixel_map(GLenum map, GLsizei mapsize, const T* values) {
-  if (compiling_list() == nullptr) return true;
+bool save_pixel_map(GLenum map, GLsizei mapsize, const T* values, const char* func) {
+  Context* ctx = compiling_list();
+  if (ctx == nullptr) return true;
   // A size beyond MAX_PIXEL_MAP_TABLE is an error when the list executes (§3.6.3), so the
   // values are not read: the array may well be shorter than the size.
-  const GLsizei copied =
-      values == nullptr || mapsize > kMaxPixelMapTable ? 0 : std::max<GLsizei>(mapsize, 0);
+  const bool sized = mapsize <= kMaxPixelMapTable;
+  const GLsizei count = sized ? std::max<GLsizei>(mapsize, 0) : 0;
+  // With a pixel unpack buffer bound the list keeps the buffer's values of compile time.
+  if (sized && unpack_buffer_bound(ctx)) {
+    const void* src = nullptr;
+    if (!unpack_memory_quiet(ctx, values, size_t(count) * sizeof(T), sizeof(T), &src)) {
+      record_error_at_execution(ctx, GL_INVALID_OPERATION, func);
+      return list_executes(ctx);
+    }
+    values = static_cast<const T*>(src);
+  }
+  const GLsizei copied = values == nullptr ? 0 : count;
   const PixelMapHeader h{map, mapsize, copied};
   return record_with_data(&replay_pixel_map<T, Fn>, &h, sizeof h, values,
                           static_cast<size_t>(copied) * sizeof(T));
@@ -164,21 +182,34 @@ template <ImageCall Call> void replay_image(const void* p) {
   std::memcpy(&h, p, sizeof h);
   Context* ctx = current_context();
   if (ctx == nullptr) return;
+  // The image is in the list, whatever buffer is bound to PIXEL_UNPACK_BUFFER now.
   const PixelStore saved = ctx->pixel_store.unpack;
+  const GLuint saved_buffer = ctx->pixel_store.unpack_buffer;
   ctx->pixel_store.unpack = h.unpack;
+  ctx->pixel_store.unpack_buffer = 0;
   Call(h, h.bytes != 0 ? static_cast<const char*>(p) + sizeof h : nullptr);
   ctx->pixel_store.unpack = saved;
+  ctx->pixel_store.unpack_buffer = saved_buffer;
 }
 
 // Compiles an image command whose client image spans client_image_bytes(w, h, d, format,
 // type) under the current unpack state; returns whether it must also execute now.
-template <ImageCall Call> bool save_image(ImageHeader h, const void* pixels, bool three_d = false) {
+template <ImageCall Call>
+bool save_image(ImageHeader h, const void* pixels, const char* func, bool three_d = false) {
   Context* ctx = compiling_list();
   if (ctx == nullptr) return true;
   // IMAGE_HEIGHT and SKIP_IMAGES apply to 3D images only (§3.8.1): a 1D or 2D image spans
   // no more than its rows.
   h.unpack = three_d ? ctx->pixel_store.unpack : store_2d(ctx->pixel_store.unpack);
-  h.bytes = pixels == nullptr ? 0 : client_image_bytes(h.w, h.h, h.d, h.format, h.type, h.unpack);
+  const size_t span = client_image_bytes(h.w, h.h, h.d, h.format, h.type, h.unpack);
+  // With a pixel unpack buffer bound the list keeps the buffer's bytes of compile time; an
+  // access the buffer cannot satisfy is the command's error when the list executes.
+  if (unpack_buffer_bound(ctx) &&
+      !unpack_memory_quiet(ctx, pixels, span, pixel_type_unit(h.type), &pixels)) {
+    record_error_at_execution(ctx, GL_INVALID_OPERATION, func);
+    return list_executes(ctx);
+  }
+  h.bytes = pixels == nullptr ? 0 : span;
   try {
     return record_with_data(&replay_image<Call>, &h, sizeof h, pixels, h.bytes);
   } catch (const std::bad_alloc&) {
@@ -266,15 +297,15 @@ void GLAPIENTRY PointParameteriv(GLenum pname, const GLint* params) {
 }
 
 void GLAPIENTRY PixelMapfv(GLenum map, GLsizei mapsize, const GLfloat* values) {
-  if (save_pixel_map<GLfloat, &exec::PixelMapfv>(map, mapsize, values))
+  if (save_pixel_map<GLfloat, &exec::PixelMapfv>(map, mapsize, values, "glPixelMapfv"))
     exec::PixelMapfv(map, mapsize, values);
 }
 void GLAPIENTRY PixelMapuiv(GLenum map, GLsizei mapsize, const GLuint* values) {
-  if (save_pixel_map<GLuint, &exec::PixelMapuiv>(map, mapsize, values))
+  if (save_pixel_map<GLuint, &exec::PixelMapuiv>(map, mapsize, values, "glPixelMapuiv"))
     exec::PixelMapuiv(map, mapsize, values);
 }
 void GLAPIENTRY PixelMapusv(GLenum map, GLsizei mapsize, const GLushort* values) {
-  if (save_pixel_map<GLushort, &exec::PixelMapusv>(map, mapsize, values))
+  if (save_pixel_map<GLushort, &exec::PixelMapusv>(map, mapsize, values, "glPixelMapusv"))
     exec::PixelMapusv(map, mapsize, values);
 }
 
@@ -299,7 +330,7 @@ void GLAPIENTRY TexImage1D(GLenum target, GLint level, GLint internalformat, GLs
   ImageHeader h;
   h.target = target, h.level = level, h.internal_format = internalformat;
   h.w = width, h.h = 1, h.d = 1, h.border = border, h.format = format, h.type = type;
-  if (is_proxy_texture_target(target) || save_image<&call_tex_image_1d>(h, pixels))
+  if (is_proxy_texture_target(target) || save_image<&call_tex_image_1d>(h, pixels, "glTexImage1D"))
     exec::TexImage1D(target, level, internalformat, width, border, format, type, pixels);
 }
 void GLAPIENTRY TexImage2D(GLenum target, GLint level, GLint internalformat, GLsizei width,
@@ -308,7 +339,7 @@ void GLAPIENTRY TexImage2D(GLenum target, GLint level, GLint internalformat, GLs
   ImageHeader h;
   h.target = target, h.level = level, h.internal_format = internalformat;
   h.w = width, h.h = height, h.d = 1, h.border = border, h.format = format, h.type = type;
-  if (is_proxy_texture_target(target) || save_image<&call_tex_image_2d>(h, pixels))
+  if (is_proxy_texture_target(target) || save_image<&call_tex_image_2d>(h, pixels, "glTexImage2D"))
     exec::TexImage2D(target, level, internalformat, width, height, border, format, type, pixels);
 }
 void GLAPIENTRY TexImage3D(GLenum target, GLint level, GLint internalformat, GLsizei width,
@@ -317,7 +348,8 @@ void GLAPIENTRY TexImage3D(GLenum target, GLint level, GLint internalformat, GLs
   ImageHeader h;
   h.target = target, h.level = level, h.internal_format = internalformat;
   h.w = width, h.h = height, h.d = depth, h.border = border, h.format = format, h.type = type;
-  if (is_proxy_texture_target(target) || save_image<&call_tex_image_3d>(h, pixels, true))
+  if (is_proxy_texture_target(target) ||
+      save_image<&call_tex_image_3d>(h, pixels, "glTexImage3D", true))
     exec::TexImage3D(target, level, internalformat, width, height, depth, border, format, type,
                      pixels);
 }
@@ -326,7 +358,7 @@ void GLAPIENTRY TexSubImage1D(GLenum target, GLint level, GLint xoffset, GLsizei
   ImageHeader h;
   h.target = target, h.level = level, h.x = xoffset;
   h.w = width, h.h = 1, h.d = 1, h.format = format, h.type = type;
-  if (save_image<&call_tex_sub_image_1d>(h, pixels))
+  if (save_image<&call_tex_sub_image_1d>(h, pixels, "glTexSubImage1D"))
     exec::TexSubImage1D(target, level, xoffset, width, format, type, pixels);
 }
 void GLAPIENTRY TexSubImage2D(GLenum target, GLint level, GLint xoffset, GLint yoffset,
@@ -335,7 +367,7 @@ void GLAPIENTRY TexSubImage2D(GLenum target, GLint level, GLint xoffset, GLint y
   ImageHeader h;
   h.target = target, h.level = level, h.x = xoffset, h.y = yoffset;
   h.w = width, h.h = height, h.d = 1, h.format = format, h.type = type;
-  if (save_image<&call_tex_sub_image_2d>(h, pixels))
+  if (save_image<&call_tex_sub_image_2d>(h, pixels, "glTexSubImage2D"))
     exec::TexSubImage2D(target, level, xoffset, yoffset, width, height, format, type, pixels);
 }
 void GLAPIENTRY TexSubImage3D(GLenum target, GLint level, GLint xoffset, GLint yoffset,
@@ -344,7 +376,7 @@ void GLAPIENTRY TexSubImage3D(GLenum target, GLint level, GLint xoffset, GLint y
   ImageHeader h;
   h.target = target, h.level = level, h.x = xoffset, h.y = yoffset, h.z = zoffset;
   h.w = width, h.h = height, h.d = depth, h.format = format, h.type = type;
-  if (save_image<&call_tex_sub_image_3d>(h, pixels, true))
+  if (save_image<&call_tex_sub_image_3d>(h, pixels, "glTexSubImage3D", true))
     exec::TexSubImage3D(target, level, xoffset, yoffset, zoffset, width, height, depth, format,
                         type, pixels);
 }
@@ -352,7 +384,7 @@ void GLAPIENTRY DrawPixels(GLsizei width, GLsizei height, GLenum format, GLenum 
                            const void* pixels) {
   ImageHeader h;
   h.w = width, h.h = height, h.d = 1, h.format = format, h.type = type;
-  if (save_image<&call_draw_pixels>(h, pixels))
+  if (save_image<&call_draw_pixels>(h, pixels, "glDrawPixels"))
     exec::DrawPixels(width, height, format, type, pixels);
 }
 void GLAPIENTRY Bitmap(GLsizei width, GLsizei height, GLfloat xorig, GLfloat yorig, GLfloat xmove,
@@ -360,13 +392,13 @@ void GLAPIENTRY Bitmap(GLsizei width, GLsizei height, GLfloat xorig, GLfloat yor
   ImageHeader h;
   h.w = width, h.h = height, h.d = 1, h.format = GL_COLOR_INDEX, h.type = GL_BITMAP;
   h.f[0] = xorig, h.f[1] = yorig, h.f[2] = xmove, h.f[3] = ymove;
-  if (save_image<&call_bitmap>(h, bitmap))
+  if (save_image<&call_bitmap>(h, bitmap, "glBitmap"))
     exec::Bitmap(width, height, xorig, yorig, xmove, ymove, bitmap);
 }
 void GLAPIENTRY PolygonStipple(const GLubyte* mask) {
   ImageHeader h;
   h.w = 32, h.h = 32, h.d = 1, h.format = GL_COLOR_INDEX, h.type = GL_BITMAP;
-  if (save_image<&call_polygon_stipple>(h, mask)) exec::PolygonStipple(mask);
+  if (save_image<&call_polygon_stipple>(h, mask, "glPolygonStipple")) exec::PolygonStipple(mask);
 }
 
 } // namespace saver

@@ -14,6 +14,7 @@
 #include "pixel/unpack.h"
 #include "draw/draw_buffers.h"
 #include "state/draw_read_buffer.h"
+#include "state/pixel_buffer.h"
 #include "state/select.h"
 
 namespace pineda {
@@ -193,11 +194,14 @@ void GLAPIENTRY DrawPixels(GLsizei width, GLsizei height, GLenum format, GLenum 
   // feedback mode no fragments are made (§5.2).
   if (!render_mode_is_render(ctx)) return raster_token(ctx, GL_DRAW_PIXEL_TOKEN);
   // §3.6.4: with an invalid raster position DrawPixels is ignored.
-  if (!ctx->current.raster_pos.valid || width == 0 || height == 0 || pixels == nullptr ||
-      ctx->fb.color == nullptr)
-    return;
-  validate_state(ctx);
+  if (!ctx->current.raster_pos.valid || width == 0 || height == 0) return;
   const PixelStore st = store_2d(ctx->pixel_store.unpack);
+  // §3.6.4: from the pixel unpack buffer when one is bound.
+  if (!unpack_memory(ctx, pixels, client_image_bytes(width, height, 1, format, type, st),
+                     pixel_type_unit(type), "glDrawPixels", &pixels))
+    return;
+  if (pixels == nullptr || ctx->fb.color == nullptr) return;
+  validate_state(ctx);
   const PixelTransferView xfer = pixel_transfer_view(ctx);
   const PixelPlacement p = placement_at(ctx, width, height);
   // Each strip unpacks `rows` rows starting at row `m` of the client image.
@@ -240,6 +244,16 @@ void GLAPIENTRY Bitmap(GLsizei width, GLsizei height, GLfloat xorig, GLfloat yor
   RasterPos& rp = ctx->current.raster_pos;
   // §3.7: with an invalid raster position the bitmap is ignored, the position not moved.
   if (!rp.valid) return;
+  // §3.7: from the pixel unpack buffer when one is bound (an error moves nothing).
+  if (render_mode_is_render(ctx) && width > 0 && height > 0) {
+    const void* src = nullptr;
+    if (!unpack_memory(ctx, bitmap,
+                       client_image_bytes(width, height, 1, GL_COLOR_INDEX, GL_BITMAP,
+                                          store_2d(ctx->pixel_store.unpack)),
+                       1, "glBitmap", &src))
+      return;
+    bitmap = static_cast<const GLubyte*>(src);
+  }
   if (!render_mode_is_render(ctx)) {
     raster_token(ctx, GL_BITMAP_TOKEN); // §5.3; the raster position still moves
   } else if (bitmap != nullptr && width > 0 && height > 0 && ctx->fb.color != nullptr) {

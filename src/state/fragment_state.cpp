@@ -34,6 +34,30 @@ bool is_stencil_op(GLenum op) {
   }
 }
 
+// GL 2.1 §4.1.5: the reference reads back clamped to [0, 2^s - 1].
+int clamped_stencil_ref(const Context& ctx, int ref) {
+  const int top = ctx.fb.stencil ? (1 << ctx.fb.stencil_bits) - 1 : 0;
+  return ref < 0 ? 0 : (ref > top ? top : ref);
+}
+
+// The faces FRONT, BACK or FRONT_AND_BACK name (GL 2.1 §4.1.5, §4.2.2); 0 for another enum.
+int stencil_faces(Context& ctx, GLenum face, StencilFace* out[2]) {
+  switch (face) {
+  case GL_FRONT:
+    out[0] = &ctx.stencil.front;
+    return 1;
+  case GL_BACK:
+    out[0] = &ctx.stencil.back;
+    return 1;
+  case GL_FRONT_AND_BACK:
+    out[0] = &ctx.stencil.front;
+    out[1] = &ctx.stencil.back;
+    return 2;
+  default:
+    return 0;
+  }
+}
+
 // Tables 6.20-6.22.
 bool get_fragment(Context& ctx, GLenum pname, QueryValues& out) {
   const ColorBufferGroup& cb = ctx.color_buffer;
@@ -54,11 +78,9 @@ bool get_fragment(Context& ctx, GLenum pname, QueryValues& out) {
     out.ints({double(st.func)});
     return true;
   // GL 2.1 §4.1.5: the reference reads back clamped to [0, 2^s - 1].
-  case GL_STENCIL_REF: {
-    const int top = ctx.fb.stencil ? (1 << ctx.fb.stencil_bits) - 1 : 0;
-    out.ints({double(st.ref < 0 ? 0 : (st.ref > top ? top : st.ref))});
+  case GL_STENCIL_REF:
+    out.ints({double(clamped_stencil_ref(ctx, st.ref))});
     return true;
-  }
   case GL_STENCIL_VALUE_MASK:
     out.ints({double(st.value_mask)});
     return true;
@@ -73,6 +95,28 @@ bool get_fragment(Context& ctx, GLenum pname, QueryValues& out) {
     return true;
   case GL_STENCIL_PASS_DEPTH_PASS:
     out.ints({double(st.depth_pass)});
+    return true;
+  // GL 2.1 Table 6.21: the back face's stencil state (GL 2.0 separate stencil).
+  case GL_STENCIL_BACK_FUNC:
+    out.ints({double(ctx.stencil.back.func)});
+    return true;
+  case GL_STENCIL_BACK_REF:
+    out.ints({double(clamped_stencil_ref(ctx, ctx.stencil.back.ref))});
+    return true;
+  case GL_STENCIL_BACK_VALUE_MASK:
+    out.ints({double(ctx.stencil.back.value_mask)});
+    return true;
+  case GL_STENCIL_BACK_WRITEMASK:
+    out.ints({double(ctx.stencil.back.writemask)});
+    return true;
+  case GL_STENCIL_BACK_FAIL:
+    out.ints({double(ctx.stencil.back.fail)});
+    return true;
+  case GL_STENCIL_BACK_PASS_DEPTH_FAIL:
+    out.ints({double(ctx.stencil.back.depth_fail)});
+    return true;
+  case GL_STENCIL_BACK_PASS_DEPTH_PASS:
+    out.ints({double(ctx.stencil.back.depth_pass)});
     return true;
   case GL_STENCIL_CLEAR_VALUE:
     out.ints({double(ctx.stencil.clear)});
@@ -196,35 +240,60 @@ void GLAPIENTRY AlphaFunc(GLenum func, GLclampf ref) {
 }
 
 void GLAPIENTRY StencilFunc(GLenum func, GLint ref, GLuint mask) {
-  PINEDA_CTX_OUTSIDE("glStencilFunc");
-  if (!is_compare_func(func)) return record_error(ctx, GL_INVALID_ENUM, "glStencilFunc", func);
-  // The GL 1.5 command sets both faces (GL 2.0 StencilFuncSeparate). The reference is kept as
-  // given: the clamp to [0, 2^s - 1] (GL 2.1 §4.1.5) depends on the stencil buffer and is
-  // applied where the value is used or queried.
-  for (StencilFace* f : {&ctx->stencil.front, &ctx->stencil.back}) {
-    f->func = func;
-    f->ref = ref;
-    f->value_mask = mask;
+  StencilFuncSeparate(GL_FRONT_AND_BACK, func, ref, mask);
+}
+
+// GL 2.1 §4.1.5: StencilFunc sets both faces, StencilFuncSeparate the faces `face` names.
+void GLAPIENTRY StencilFuncSeparate(GLenum face, GLenum func, GLint ref, GLuint mask) {
+  const char* name = face == GL_FRONT_AND_BACK ? "glStencilFunc" : "glStencilFuncSeparate";
+  PINEDA_CTX_OUTSIDE(name);
+  StencilFace* faces[2] = {};
+  const int n = stencil_faces(*ctx, face, faces);
+  if (n == 0) return record_error(ctx, GL_INVALID_ENUM, name, face);
+  if (!is_compare_func(func)) return record_error(ctx, GL_INVALID_ENUM, name, func);
+  // The reference is kept as given: the clamp to [0, 2^s - 1] depends on the stencil buffer
+  // and is applied where the value is used or queried.
+  for (int i = 0; i < n; ++i) {
+    faces[i]->func = func;
+    faces[i]->ref = ref;
+    faces[i]->value_mask = mask;
   }
   mark_dirty(ctx, kDirtyFragment);
 }
 
 void GLAPIENTRY StencilOp(GLenum sfail, GLenum dpfail, GLenum dppass) {
-  PINEDA_CTX_OUTSIDE("glStencilOp");
+  StencilOpSeparate(GL_FRONT_AND_BACK, sfail, dpfail, dppass);
+}
+
+void GLAPIENTRY StencilOpSeparate(GLenum face, GLenum sfail, GLenum dpfail, GLenum dppass) {
+  const char* name = face == GL_FRONT_AND_BACK ? "glStencilOp" : "glStencilOpSeparate";
+  PINEDA_CTX_OUTSIDE(name);
+  StencilFace* faces[2] = {};
+  const int n = stencil_faces(*ctx, face, faces);
+  if (n == 0) return record_error(ctx, GL_INVALID_ENUM, name, face);
   for (GLenum op : {sfail, dpfail, dppass})
-    if (!is_stencil_op(op)) return record_error(ctx, GL_INVALID_ENUM, "glStencilOp", op);
-  for (StencilFace* f : {&ctx->stencil.front, &ctx->stencil.back}) {
-    f->fail = sfail;
-    f->depth_fail = dpfail;
-    f->depth_pass = dppass;
+    if (!is_stencil_op(op)) return record_error(ctx, GL_INVALID_ENUM, name, op);
+  for (int i = 0; i < n; ++i) {
+    faces[i]->fail = sfail;
+    faces[i]->depth_fail = dpfail;
+    faces[i]->depth_pass = dppass;
   }
   mark_dirty(ctx, kDirtyFragment);
 }
 
 void GLAPIENTRY StencilMask(GLuint mask) {
-  PINEDA_CTX_OUTSIDE("glStencilMask");
-  // GL 2.1 §4.2.2: the low s bits are the mask; the value is kept whole, as given.
-  ctx->stencil.front.writemask = ctx->stencil.back.writemask = mask;
+  StencilMaskSeparate(GL_FRONT_AND_BACK, mask);
+}
+
+// GL 2.1 §4.2.2: the low s bits are the mask; the value is kept whole, as given.
+void GLAPIENTRY StencilMaskSeparate(GLenum face, GLuint mask) {
+  const char* name = face == GL_FRONT_AND_BACK ? "glStencilMask" : "glStencilMaskSeparate";
+  PINEDA_CTX_OUTSIDE(name);
+  StencilFace* faces[2] = {};
+  const int n = stencil_faces(*ctx, face, faces);
+  if (n == 0) return record_error(ctx, GL_INVALID_ENUM, name, face);
+  for (int i = 0; i < n; ++i)
+    faces[i]->writemask = mask;
   mark_dirty(ctx, kDirtyFragment);
 }
 

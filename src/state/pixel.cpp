@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "state/api_util.h"
+#include "state/pixel_buffer.h"
 #include "dispatch.h"
 #include "state/area.h"
 
@@ -83,6 +84,10 @@ void pixel_map(const char* func, GLenum map, GLsizei size, const T* values, Conv
   if (size < 1 || size > kMaxPixelMapTable) return record_error(ctx, GL_INVALID_VALUE, func);
   if (pixel_map_index_addressed(id) && (size & (size - 1)) != 0)
     return record_error(ctx, GL_INVALID_VALUE, func);
+  // GL 2.1 §3.6.3: with a pixel unpack buffer bound, values is an offset into it.
+  const void* src = nullptr;
+  if (!unpack_memory(ctx, values, size_t(size) * sizeof(T), sizeof(T), func, &src)) return;
+  values = static_cast<const T*>(src);
   if (values == nullptr) return;
   PixelMap& pm = ctx->pixel_maps.maps[id];
   pm.size = size;
@@ -105,8 +110,12 @@ void get_pixel_map(const char* func, GLenum map, T* values, Convert convert) {
   PINEDA_CTX_OUTSIDE(func);
   const int id = pixel_map_id(map);
   if (id < 0) return record_error(ctx, GL_INVALID_ENUM, func, map);
-  if (values == nullptr) return;
   const PixelMap& pm = ctx->pixel_maps.maps[id];
+  // GL 2.1 §6.1.3: with a pixel pack buffer bound, values is an offset into it.
+  void* dst = nullptr;
+  if (!pack_memory(ctx, values, size_t(pm.size) * sizeof(T), sizeof(T), func, &dst)) return;
+  values = static_cast<T*>(dst);
+  if (values == nullptr) return;
   for (int i = 0; i < pm.size; ++i)
     values[i] = convert(pm.values[i], id);
 }
@@ -237,6 +246,12 @@ bool get_pixel(Context& ctx, GLenum pname, QueryValues& out) {
     return true;
   case GL_UNPACK_SKIP_IMAGES:
     out.ints({double(unpack.skip_images)});
+    return true;
+  case GL_PIXEL_PACK_BUFFER_BINDING:
+    out.ints({double(ctx.pixel_store.pack_buffer)});
+    return true;
+  case GL_PIXEL_UNPACK_BUFFER_BINDING:
+    out.ints({double(ctx.pixel_store.unpack_buffer)});
     return true;
   default:
     return false;

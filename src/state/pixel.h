@@ -24,9 +24,12 @@ struct PixelGroup {
   GLenum read_buffer = GL_FRONT;
 };
 
-// CLIENT_PIXEL_STORE_BIT: Table 6.23 (§3.6.1 unpack, §4.3.2 pack).
+// CLIENT_PIXEL_STORE_BIT: Table 6.23 (§3.6.1 unpack, §4.3.2 pack), with the pixel buffer
+// bindings (PIXEL_PACK_BUFFER_BINDING, PIXEL_UNPACK_BUFFER_BINDING: "pixel-store" in GL 2.1
+// Table 6.23; pixel_buffer.h).
 struct PixelStoreGroup {
   PixelStore pack, unpack;
+  GLuint pack_buffer = 0, unpack_buffer = 0;
 };
 
 // The transfer operations' view of the context's transfer modes and pixel maps.

@@ -8,6 +8,8 @@
 #include "state/api_util.h"
 #include "dispatch.h"
 #include "state/area.h"
+#include "pixel/unpack.h"
+#include "state/pixel_buffer.h"
 
 namespace pineda {
 
@@ -42,7 +44,8 @@ inline unsigned bit_mask(size_t bit, bool lsb_first) {
 
 bool valid_point_pname(GLenum pname) {
   return pname == GL_POINT_SIZE_MIN || pname == GL_POINT_SIZE_MAX ||
-         pname == GL_POINT_FADE_THRESHOLD_SIZE || pname == GL_POINT_DISTANCE_ATTENUATION;
+         pname == GL_POINT_FADE_THRESHOLD_SIZE || pname == GL_POINT_DISTANCE_ATTENUATION ||
+         pname == GL_POINT_SPRITE_COORD_ORIGIN;
 }
 
 // glPointParameter* with pname validated by the caller and `n` values (3 for the attenuation).
@@ -51,6 +54,17 @@ void point_parameter(Context* ctx, const char* func, GLenum pname, const float* 
   if (pname == GL_POINT_DISTANCE_ATTENUATION) {
     if (s.attenuation[0] == v[0] && s.attenuation[1] == v[1] && s.attenuation[2] == v[2]) return;
     std::copy(v, v + 3, s.attenuation);
+    mark_dirty(ctx, kDirtyRasterMode);
+    return;
+  }
+  if (pname == GL_POINT_SPRITE_COORD_ORIGIN) {
+    // GL 2.1 §3.3: LOWER_LEFT or UPPER_LEFT; another value is INVALID_VALUE (as in Mesa).
+    const GLenum origin = v[0] == static_cast<float>(GL_LOWER_LEFT)   ? GL_LOWER_LEFT
+                          : v[0] == static_cast<float>(GL_UPPER_LEFT) ? GL_UPPER_LEFT
+                                                                      : GL_NONE;
+    if (origin == GL_NONE) return record_error(ctx, GL_INVALID_VALUE, func);
+    if (s.sprite_origin == origin) return;
+    s.sprite_origin = origin;
     mark_dirty(ctx, kDirtyRasterMode);
     return;
   }
@@ -85,6 +99,9 @@ bool get_rasterization(Context& ctx, GLenum pname, QueryValues& out) {
     return true;
   case GL_POINT_FADE_THRESHOLD_SIZE:
     out.floats({point.fade_threshold});
+    return true;
+  case GL_POINT_SPRITE_COORD_ORIGIN:
+    out.ints({double(point.sprite_origin)});
     return true;
   case GL_POINT_DISTANCE_ATTENUATION:
     out.floats(point.attenuation, 3);
@@ -138,6 +155,9 @@ constexpr Capability kRasterizationCaps[] = {
      [](Context& c, unsigned, unsigned) { return &c.polygon.cull_enabled; }},
     {GL_POINT_SMOOTH, 1, CapabilityKind::kServer, kDirtyRasterMode,
      [](Context& c, unsigned, unsigned) { return &c.point.smooth; }},
+    // GL 2.1 §3.3 (ARB_point_sprite).
+    {GL_POINT_SPRITE, 1, CapabilityKind::kServer, kDirtyRasterMode,
+     [](Context& c, unsigned, unsigned) { return &c.point.sprite; }},
     {GL_LINE_SMOOTH, 1, CapabilityKind::kServer, kDirtyRasterMode,
      [](Context& c, unsigned, unsigned) { return &c.line.smooth; }},
     {GL_LINE_STIPPLE, 1, CapabilityKind::kServer, kDirtyRasterMode,
@@ -239,8 +259,15 @@ void GLAPIENTRY LineStipple(GLint factor, GLushort pattern) {
 
 void GLAPIENTRY PolygonStipple(const GLubyte* mask) {
   PINEDA_CTX_OUTSIDE("glPolygonStipple");
-  if (mask == nullptr) return;
   const PixelStore& ps = ctx->pixel_store.unpack;
+  // GL 2.1 §3.5.2: from the pixel unpack buffer when one is bound.
+  const void* src = nullptr;
+  if (!unpack_memory(ctx, mask,
+                     client_image_bytes(32, 32, 1, GL_COLOR_INDEX, GL_BITMAP, store_2d(ps)), 1,
+                     "glPolygonStipple", &src))
+    return;
+  mask = static_cast<const GLubyte*>(src);
+  if (mask == nullptr) return;
   const BitmapLayout l = bitmap_layout(ps);
   PolygonStippleGroup& s = ctx->polygon_stipple;
   // GL 2.1 §3.5.2: the first row of the image is the bottom row of the pattern.
@@ -258,10 +285,17 @@ void GLAPIENTRY PolygonStipple(const GLubyte* mask) {
 
 void GLAPIENTRY GetPolygonStipple(GLubyte* mask) {
   PINEDA_CTX_OUTSIDE("glGetPolygonStipple");
-  if (mask == nullptr) return;
-  // GL 2.1 §6.1.5: packed like ReadPixels of a 32x32 bitmap with the pack state; bits of the
-  // destination outside the pattern keep their values.
+  // GL 2.1 §6.1.5: packed like ReadPixels of a 32x32 bitmap with the pack state (into the
+  // pixel pack buffer when one is bound); bits of the destination outside the pattern keep
+  // their values.
   const PixelStore& ps = ctx->pixel_store.pack;
+  void* dst = nullptr;
+  if (!pack_memory(ctx, mask,
+                   client_image_bytes(32, 32, 1, GL_COLOR_INDEX, GL_BITMAP, store_2d(ps)), 1,
+                   "glGetPolygonStipple", &dst))
+    return;
+  mask = static_cast<GLubyte*>(dst);
+  if (mask == nullptr) return;
   const BitmapLayout l = bitmap_layout(ps);
   const PolygonStippleGroup& s = ctx->polygon_stipple;
   for (int r = 0; r < 32; ++r) {

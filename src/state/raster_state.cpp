@@ -35,6 +35,11 @@ void derive_raster_modes(const Context& ctx, RasterModes& m) {
   m.point_size_max = std::min(point.size_max, kMaxPointSize);
   m.point_fade_threshold = point.fade_threshold;
   std::copy(point.attenuation, point.attenuation + 3, m.point_attenuation);
+  m.point_sprite = point.sprite;
+  m.sprite_lower_left = point.sprite_origin == GL_LOWER_LEFT;
+  m.sprite_coord_replace = 0;
+  for (int u = 0; u < kMaxTexUnits; ++u)
+    if (point.coord_replace[u]) m.sprite_coord_replace |= static_cast<uint8_t>(1u << u);
   // The stipple pattern all ones stipples nothing: skip the per-block AND.
   const uint32_t* rows = ctx.polygon_stipple.rows;
   bool all_ones = true;
@@ -111,6 +116,7 @@ void derive_raster_state(Context& ctx, uint32_t dirty) {
     // GL 2.1 §4.1.5: without a stencil buffer the test always passes and writes nothing.
     rs.stencil_test = ctx.stencil.test && ctx.fb.stencil != nullptr;
     rs.stencil = ctx.stencil.front;
+    rs.stencil_back = ctx.stencil.back;
     rs.logic_op = cb.color_logic_op;
     rs.logic_op_mode = cb.logic_op;
   }

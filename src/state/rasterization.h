@@ -23,6 +23,11 @@ struct PointGroup {
   float size_max = kMaxPointSize; // the largest size supported (Table 6.12's initial value)
   float fade_threshold = 1.0f;
   float attenuation[3] = {1.0f, 0.0f, 0.0f}; // POINT_DISTANCE_ATTENUATION
+  // Point sprites (GL 2.1 §3.3, Table 6.12; POINT_SPRITE is also "enable"): COORD_REPLACE of
+  // each texture unit (set with TexEnv, texenv.cpp) and POINT_SPRITE_COORD_ORIGIN.
+  bool sprite = false;
+  bool coord_replace[kMaxTexUnits] = {};
+  GLenum sprite_origin = GL_UPPER_LEFT;
 };
 
 // LINE_BIT: Table 6.13 (LINE_SMOOTH and LINE_STIPPLE are also "enable").

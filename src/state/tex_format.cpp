@@ -55,6 +55,14 @@ GLenum uncompressed_internal_format(GLenum internalformat) {
     return GL_RGB;
   case GL_COMPRESSED_RGBA:
     return GL_RGBA;
+  case GL_COMPRESSED_SRGB:
+    return GL_SRGB;
+  case GL_COMPRESSED_SRGB_ALPHA:
+    return GL_SRGB_ALPHA;
+  case GL_COMPRESSED_SLUMINANCE:
+    return GL_SLUMINANCE;
+  case GL_COMPRESSED_SLUMINANCE_ALPHA:
+    return GL_SLUMINANCE_ALPHA;
   default:
     return internalformat;
   }
@@ -151,6 +159,32 @@ bool lookup_internal_format(GLint internalformat, TexFormatInfo& out) {
   case GL_RGBA12:
   case GL_RGBA16:
     out = colour(B::RGBA, 16, 16, 16, 16);
+    return true;
+  // GL 2.1 Tables 3.16, 3.17: the sRGB formats (their generic compressed forms stored
+  // uncompressed, as the others).
+  case GL_COMPRESSED_SRGB:
+  case GL_SRGB:
+  case GL_SRGB8:
+    out = colour(B::RGB, 8, 8, 8, 0);
+    out.srgb = true;
+    return true;
+  case GL_COMPRESSED_SRGB_ALPHA:
+  case GL_SRGB_ALPHA:
+  case GL_SRGB8_ALPHA8:
+    out = colour(B::RGBA, 8, 8, 8, 8);
+    out.srgb = true;
+    return true;
+  case GL_COMPRESSED_SLUMINANCE:
+  case GL_SLUMINANCE:
+  case GL_SLUMINANCE8:
+    out = colour(B::Luminance, 0, 0, 0, 0, 8);
+    out.srgb = true;
+    return true;
+  case GL_COMPRESSED_SLUMINANCE_ALPHA:
+  case GL_SLUMINANCE_ALPHA:
+  case GL_SLUMINANCE8_ALPHA8:
+    out = colour(B::LuminanceAlpha, 0, 0, 0, 8, 8);
+    out.srgb = true;
     return true;
   case GL_DEPTH_COMPONENT:
   case GL_DEPTH_COMPONENT24:

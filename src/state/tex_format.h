@@ -20,6 +20,9 @@ struct TexFormatInfo {
   // Resolutions reported by glGetTexLevelParameter (those llvmpipe reports: 12-bit components
   // are kept in 16). Stored resolution is min(size, 8) for colour.
   uint8_t r = 0, g = 0, b = 0, a = 0, l = 0, i = 0, d = 0;
+  // GL 2.1 §3.8.1 Table 3.16 (EXT_texture_sRGB): SRGB*, SLUMINANCE*. The texels are stored as
+  // given, sRGB-encoded, and decoded when sampled (§3.8.15).
+  bool srgb = false;
 };
 
 // The format `internalformat` names (Tables 3.16, 3.17 and the legacy 1-4), or false for a

@@ -4,12 +4,14 @@
 #include "state/tex_image.h"
 
 #include <algorithm>
+#include <cmath>
 #include <cstring>
 #include <new>
 #include <stdexcept>
 #include <vector>
 
 #include "state/api_util.h"
+#include "state/pixel_buffer.h"
 #include "dispatch.h"
 #include "pixel/unpack.h"
 #include "state/tex_format.h"
@@ -152,6 +154,12 @@ void tex_image(const char* func, int dims, GLenum target, GLint level, GLint int
   TexImage im;
   set_image_info(im, GLenum(internalformat), info, w, h, d, border);
   const size_t count = size_t(w) * size_t(h) * size_t(d);
+  // §3.8.1: from the pixel unpack buffer when one is bound.
+  if (!unpack_memory(
+          ctx, pixels,
+          client_image_bytes(w, h, d, format, type, store_for(ctx->pixel_store.unpack, dims)),
+          pixel_type_unit(type), func, &pixels))
+    return;
   try {
     if (info.depth) {
       im.z.assign(count, 0.0f);
@@ -186,7 +194,14 @@ void tex_sub_image(const char* func, int dims, GLenum target, GLint level, GLint
   if (im->is_depth != (format == GL_DEPTH_COMPONENT))
     return record_error(ctx, GL_INVALID_OPERATION, func);
   const size_t count = size_t(w) * size_t(h) * size_t(d);
-  if (count == 0 || pixels == nullptr) return;
+  if (count == 0) return;
+  // §3.8.2: from the pixel unpack buffer when one is bound.
+  if (!unpack_memory(
+          ctx, pixels,
+          client_image_bytes(w, h, d, format, type, store_for(ctx->pixel_store.unpack, dims)),
+          pixel_type_unit(type), func, &pixels))
+    return;
+  if (pixels == nullptr) return;
   try {
     unpack_into(ctx, *im, dims, x, y, z, w, h, d, format, type, pixels);
   } catch (const std::bad_alloc&) {
@@ -341,6 +356,7 @@ void set_image_info(TexImage& im, GLenum internalformat, const TexFormatInfo& f,
   im.internal_format = uncompressed_internal_format(internalformat); // §3.8.1
   im.base = f.base;
   im.is_depth = f.depth;
+  im.srgb = f.srgb;
   im.red_size = f.r, im.green_size = f.g, im.blue_size = f.b, im.alpha_size = f.a;
   im.luminance_size = f.l, im.intensity_size = f.i, im.depth_size = f.d;
 }
@@ -405,6 +421,71 @@ void store_region(TexImage& im, int dims, int x, int y, int z, int w, int h, int
   }
 }
 
+namespace {
+
+// GL 2.1 §3.8.15: a linear value encoded as an 8-bit sRGB component (the inverse of eq. 3.28).
+uint8_t encode_srgb8(float linear) {
+  const double c = std::clamp(static_cast<double>(linear), 0.0, 1.0);
+  const double s = c <= 0.0031308 ? 12.92 * c : 1.055 * std::pow(c, 1.0 / 2.4) - 0.055;
+  return static_cast<uint8_t>(std::lround(s * 255.0));
+}
+
+// The next level of an sRGB image: each texel the bilinear (trilinear) sample of the decoded
+// source at its centre (for halved power-of-two sizes the 2x2 (2x2x2) box), encoded again, so
+// a level keeps the brightness of the one above (§3.8.8 leaves the filter open; Mesa filters
+// sRGB levels in linear space too). Alpha is linear. Border texels come from the source border.
+void downsample_srgb(const TexImage& src, TexImage& dst, int dims) {
+  const float* lin = srgb_decode_table();
+  const int b = src.border, bj = dims >= 2 ? b : 0, bk = dims >= 3 ? b : 0;
+  const int ss[3] = {src.width - 2 * b, src.height - 2 * bj, src.depth - 2 * bk};
+  const int ds[3] = {dst.width - 2 * b, dst.height - 2 * bj, dst.depth - 2 * bk};
+  struct Ax {
+    int i0, i1;
+    float w;
+  };
+  const auto axis = [](int i, int dsize, int ssize) {
+    if (i < 0) return Ax{-1, -1, 0.0f};
+    if (i >= dsize) return Ax{ssize, ssize, 0.0f};
+    const float u =
+        std::clamp((float(i) + 0.5f) * float(ssize) / float(dsize) - 0.5f, 0.0f, float(ssize - 1));
+    const int i0 = static_cast<int>(u);
+    return Ax{i0, std::min(i0 + 1, ssize - 1), u - float(i0)};
+  };
+  const auto at = [&](int i, int j, int k) {
+    return &src.rgba[((size_t(k + bk) * size_t(src.height) + size_t(j + bj)) * size_t(src.width) +
+                      size_t(i + b)) *
+                     4];
+  };
+  size_t o = 0;
+  for (int k = -bk; k < ds[2] + bk; ++k) {
+    const Ax ak = dims >= 3 ? axis(k, ds[2], ss[2]) : Ax{0, 0, 0.0f};
+    for (int j = -bj; j < ds[1] + bj; ++j) {
+      const Ax aj = dims >= 2 ? axis(j, ds[1], ss[1]) : Ax{0, 0, 0.0f};
+      for (int i = -b; i < ds[0] + b; ++i, ++o) {
+        const Ax ai = axis(i, ds[0], ss[0]);
+        float acc[4] = {};
+        for (int kk = 0; kk < (dims >= 3 ? 2 : 1); ++kk)
+          for (int jj = 0; jj < (dims >= 2 ? 2 : 1); ++jj)
+            for (int ii = 0; ii < 2; ++ii) {
+              const float w = (ii ? ai.w : 1.0f - ai.w) *
+                              (dims >= 2 ? (jj ? aj.w : 1.0f - aj.w) : 1.0f) *
+                              (dims >= 3 ? (kk ? ak.w : 1.0f - ak.w) : 1.0f);
+              const uint8_t* t = at(ii ? ai.i1 : ai.i0, jj ? aj.i1 : aj.i0, kk ? ak.i1 : ak.i0);
+              for (int c = 0; c < 3; ++c)
+                acc[c] += w * lin[t[c]];
+              acc[3] += w * (t[3] * (1.0f / 255.0f));
+            }
+        for (int c = 0; c < 3; ++c)
+          dst.rgba[o * 4 + c] = encode_srgb8(acc[c]);
+        dst.rgba[o * 4 + 3] =
+            static_cast<uint8_t>(std::lround(std::clamp(acc[3], 0.0f, 1.0f) * 255.0f));
+      }
+    }
+  }
+}
+
+} // namespace
+
 void downsample_image(const TexImage& src, TexImage& dst, int dims) {
   const size_t count = size_t(dst.width) * size_t(dst.height) * size_t(dst.depth);
   TexelImage from, to;
@@ -417,6 +498,9 @@ void downsample_image(const TexImage& src, TexImage& dst, int dims) {
     dst.z.assign(count, 0.0f);
     from.z = src.z.data();
     to.z_out = dst.z.data();
+  } else if (src.srgb) {
+    dst.rgba.assign(count * 4, 0);
+    return downsample_srgb(src, dst, dims);
   } else {
     dst.rgba.assign(count * 4, 0);
     from.rgba = src.rgba.data();
@@ -518,6 +602,12 @@ void GLAPIENTRY GetTexImage(GLenum target, GLint level, GLenum format, GLenum ty
   if (im.width == 0) return;
   if (im.is_depth != (format == GL_DEPTH_COMPONENT))
     return record_error(ctx, GL_INVALID_OPERATION, "glGetTexImage");
+  // §6.1.4: into the pixel pack buffer when one is bound.
+  if (!pack_memory(ctx, pixels,
+                   client_image_bytes(im.width, im.height, im.depth, format, type,
+                                      store_for(ctx->pixel_store.pack, dims)),
+                   pixel_type_unit(type), "glGetTexImage", &pixels))
+    return;
   if (pixels == nullptr) return;
   const size_t count = size_t(im.width) * size_t(im.height) * size_t(im.depth);
   try {

@@ -162,6 +162,16 @@ void tex_env(const char* func, GLenum target, GLenum pname, const double* v, con
     e.lod_bias = bias;
     return mark_dirty(ctx, kDirtyTexture);
   }
+  if (target == GL_POINT_SPRITE) {
+    // GL 2.1 §3.3, §3.8.13: COORD_REPLACE of the active unit, TRUE or FALSE (another value is
+    // INVALID_VALUE, as in Mesa). It is point state (Table 6.12).
+    if (pname != GL_COORD_REPLACE) return record_error(ctx, GL_INVALID_ENUM, func, pname);
+    if (v[0] != GL_TRUE && v[0] != GL_FALSE) return record_error(ctx, GL_INVALID_VALUE, func);
+    bool& replace = ctx->point.coord_replace[ctx->texture.active];
+    if (replace == (v[0] == GL_TRUE)) return;
+    replace = v[0] == GL_TRUE;
+    return mark_dirty(ctx, kDirtyRasterMode);
+  }
   if (target != GL_TEXTURE_ENV) return record_error(ctx, GL_INVALID_ENUM, func, target);
   if (pname == GL_TEXTURE_ENV_COLOR) {
     if (!vector) return record_error(ctx, GL_INVALID_ENUM, func, pname);
@@ -203,6 +213,14 @@ int get_tex_env(const char* func, GLenum target, GLenum pname, double* out, bool
       return 0;
     }
     out[0] = e.lod_bias;
+    return 1;
+  }
+  if (target == GL_POINT_SPRITE) {
+    if (pname != GL_COORD_REPLACE) {
+      record_error(ctx, GL_INVALID_ENUM, func, pname);
+      return 0;
+    }
+    out[0] = ctx->point.coord_replace[ctx->texture.active] ? 1.0 : 0.0;
     return 1;
   }
   if (target != GL_TEXTURE_ENV) {

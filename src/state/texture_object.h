@@ -27,6 +27,7 @@ struct TexImage {
   GLenum internal_format = 1; // TEXTURE_INTERNAL_FORMAT as the application gave it (Table 6.20)
   TexBase base = TexBase::RGBA;
   bool is_depth = false; // DEPTH_COMPONENT base format; `base` is then unused
+  bool srgb = false;     // an sRGB internal format (tex_format.h): decoded when sampled
   // Component resolutions reported by glGetTexLevelParameter (TEXTURE_RED_SIZE ...).
   uint8_t red_size = 0, green_size = 0, blue_size = 0, alpha_size = 0;
   uint8_t luminance_size = 0, intensity_size = 0, depth_size = 0;

@@ -15,7 +15,7 @@ bool is_mipmap_filter(GLenum f) {
 
 // Whether a level sequence matches the base level's format and border (§3.8.10).
 bool same_format(const TexImage& a, const TexImage& b) {
-  return a.is_depth == b.is_depth && a.base == b.base && a.border == b.border &&
+  return a.is_depth == b.is_depth && a.base == b.base && a.srgb == b.srgb && a.border == b.border &&
          a.red_size == b.red_size && a.green_size == b.green_size && a.blue_size == b.blue_size &&
          a.alpha_size == b.alpha_size && a.luminance_size == b.luminance_size &&
          a.intensity_size == b.intensity_size && a.depth_size == b.depth_size;
@@ -103,6 +103,7 @@ bool make_sampler_view(const TextureObject& tex, SamplerView& out) {
   }
   out.target = target;
   out.is_depth = b.is_depth;
+  out.srgb = b.srgb;
   if (b.is_depth) {
     out.base = p.depth_mode == GL_INTENSITY ? TexBase::Intensity
                : p.depth_mode == GL_ALPHA   ? TexBase::Alpha

@@ -14,6 +14,7 @@
 #include "texture/sampler.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstring>
 
@@ -199,6 +200,12 @@ inline void fetch(const LevelCtx& c, int i, int j, int k, float* out) {
   }
   const uint8_t* t = c.lv->rgba + idx * 4;
   constexpr float k255 = 1.0f / 255.0f;
+  if (c.v->srgb) {
+    // §3.8.15: decoded before filtering.
+    const float* lin = srgb_decode_table();
+    out[0] = lin[t[0]], out[1] = lin[t[1]], out[2] = lin[t[2]], out[3] = t[3] * k255;
+    return;
+  }
   out[0] = t[0] * k255, out[1] = t[1] * k255, out[2] = t[2] * k255, out[3] = t[3] * k255;
 }
 
@@ -469,6 +476,18 @@ void sample_2d_fixed(const SamplerView& v, int n, const float* s, const float* t
 
 } // namespace
 
+const float* srgb_decode_table() {
+  static const auto table = [] {
+    std::array<float, 256> t{};
+    for (int i = 0; i < 256; ++i) {
+      const double c = i / 255.0;
+      t[i] = static_cast<float>(c <= 0.04045 ? c / 12.92 : std::pow((c + 0.055) / 1.055, 2.4));
+    }
+    return t;
+  }();
+  return table.data();
+}
+
 void sample_texture(const SamplerView& v, int n, const float* s, const float* t, const float* r,
                     const float* lambda, float bias, float (*rgba)[4]) {
   const int dims = texture_dims(v.target);
@@ -476,7 +495,9 @@ void sample_texture(const SamplerView& v, int n, const float* s, const float* t,
   const bool simple_s = v.wrap_s == GL_REPEAT || v.wrap_s == GL_CLAMP_TO_EDGE;
   const bool simple_t = dims < 2 || v.wrap_t == GL_REPEAT || v.wrap_t == GL_CLAMP_TO_EDGE;
   const bool simple_r = dims < 3 || v.wrap_r == GL_REPEAT || v.wrap_r == GL_CLAMP_TO_EDGE;
-  const bool fixed = !v.is_depth && !cube && simple_s && simple_t && simple_r;
+  // sRGB textures are filtered in float after decoding (linear values need more than 8
+  // bits), as llvmpipe filters them.
+  const bool fixed = !v.is_depth && !v.srgb && !cube && simple_s && simple_t && simple_r;
   // §3.8.8 eq. 3.17: the biases' sum is clamped to MAX_TEXTURE_LOD_BIAS.
   const float total_bias = std::clamp(bias + v.lod_bias, -kMaxLodBias, kMaxLodBias);
   const GLenum minf = v.min_filter;

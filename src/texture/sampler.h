@@ -44,6 +44,9 @@ struct SamplerView {
   // levels[face][level]; valid for face < faces and base_level <= level <= max_level.
   SamplerLevel levels[6][kMaxTexLevels];
   bool is_depth = false;
+  // An sRGB internal format (GL 2.1 §3.8.15, EXT_texture_sRGB): the stored R, G, B (or L) are
+  // sRGB-encoded and are decoded to linear before filtering; alpha is linear.
+  bool srgb = false;
 
   // ---- parameters (Table 6.19) ----
   GLenum min_filter = GL_NEAREST_MIPMAP_LINEAR, mag_filter = GL_LINEAR;
@@ -67,6 +70,9 @@ struct SamplerView {
 // `t` may be null for 1D textures and `r` for 1D/2D ones.
 void sample_texture(const SamplerView& v, int n, const float* s, const float* t, const float* r,
                     const float* lambda, float bias, float (*rgba)[4]);
+
+// GL 2.1 §3.8.15 eq. 3.28: the linear value of each 8-bit sRGB-encoded component c / 255.
+const float* srgb_decode_table();
 
 // Whether sample_quads filters `v` in vectors (2D colour texture, LINEAR minification,
 // CLAMP_TO_EDGE or power-of-two REPEAT wraps); make_sampler_view records it in `quads`.

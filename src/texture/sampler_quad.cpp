@@ -6,7 +6,8 @@
 // 1/256), so the results equal sample_texture's bit for bit. Since one quad shares one lambda
 // (GL 2.1 §3.8.8 allows rho to be approximated; llvmpipe computes it per quad), the level
 // selection is done once per quad. Whatever this path does not cover (NEAREST filters,
-// coordinates too large for 32-bit fixed point, NaN) goes through sample_texture.
+// coordinates too large for 32-bit fixed point, NaN) goes through sample_texture. sRGB
+// textures are decoded and filtered in float instead (srgb_quads), as sample_texture does.
 //
 // The vector path is SSE2; where the CPU has AVX2 (texture/cpu_dispatch.h) a second copy runs,
 // which filters the two levels of a LINEAR_MIPMAP_LINEAR sample side by side in 256-bit vectors.
@@ -364,6 +365,151 @@ template <bool kAvx2>
   }
 }
 
+// ---- sRGB textures ----
+//
+// GL 2.1 §3.8.15: the texels are decoded to linear before filtering, which then needs more
+// than 8 bits: sampler.cpp filters them in float (its general path, as llvmpipe does), and
+// this is that path's arithmetic four fragments at a time, one channel per vector, so the
+// results are the same bit for bit (no FMA: each product is rounded as there).
+
+// floor for |x| < 2^31 with SSE2 only.
+[[gnu::always_inline]] inline __m128 floor4(__m128 x) {
+  const __m128 t = _mm_cvtepi32_ps(_mm_cvttps_epi32(x));
+  return _mm_sub_ps(t, _mm_and_ps(_mm_cmpgt_ps(t, x), _mm_set1_ps(1.0f)));
+}
+
+// sampler.cpp's axis_linear for REPEAT on a power-of-two size or CLAMP_TO_EDGE: texel
+// indices (border offset added) and the weight of i1.
+[[gnu::always_inline]] inline void srgb_axis4(__m128 s, int size, bool repeat, int border,
+                                              __m128i& i0, __m128i& i1, __m128& w) {
+  const __m128 fsize = _mm_set1_ps(static_cast<float>(size));
+  __m128 u;
+  if (repeat) {
+    u = _mm_sub_ps(_mm_mul_ps(_mm_sub_ps(s, floor4(s)), fsize), _mm_set1_ps(0.5f));
+  } else {
+    const __m128 c = _mm_min_ps(_mm_max_ps(_mm_mul_ps(s, fsize), _mm_set1_ps(0.5f)),
+                                _mm_set1_ps(static_cast<float>(size) - 0.5f));
+    u = _mm_sub_ps(c, _mm_set1_ps(0.5f));
+  }
+  const __m128 fl = floor4(u);
+  w = _mm_sub_ps(u, fl);
+  i0 = _mm_cvttps_epi32(fl);
+  i1 = _mm_add_epi32(i0, _mm_set1_epi32(1));
+  const __m128i last = _mm_set1_epi32(size - 1);
+  if (repeat) {
+    i0 = _mm_and_si128(i0, last);
+    i1 = _mm_and_si128(i1, last);
+  } else {
+    i0 = clamp4(i0, last);
+    i1 = clamp4(i1, last);
+  }
+  i0 = _mm_add_epi32(i0, _mm_set1_epi32(border));
+  i1 = _mm_add_epi32(i1, _mm_set1_epi32(border));
+}
+
+struct Planes4 {
+  __m128 c[4]; // R, G, B, A of four fragments
+};
+
+// The texels at texel offsets `idx` of `base`, decoded: R, G, B through the sRGB table, alpha
+// c / 255.
+[[gnu::always_inline]] inline Planes4 srgb_texels(const uint8_t* base, __m128i idx) {
+  alignas(16) int32_t o[4];
+  _mm_store_si128(reinterpret_cast<__m128i*>(o), idx);
+  const float* lin = srgb_decode_table();
+  alignas(16) float ch[4][4];
+  for (int k = 0; k < 4; ++k) {
+    const uint8_t* p = base + static_cast<ptrdiff_t>(o[k]) * 4;
+    ch[0][k] = lin[p[0]], ch[1][k] = lin[p[1]], ch[2][k] = lin[p[2]];
+    ch[3][k] = static_cast<float>(p[3]);
+  }
+  Planes4 out;
+  for (int c = 0; c < 3; ++c)
+    out.c[c] = _mm_load_ps(ch[c]);
+  out.c[3] = _mm_mul_ps(_mm_load_ps(ch[3]), _mm_set1_ps(1.0f / 255.0f));
+  return out;
+}
+
+// Bilinear filtering of level `l` at four coordinates, in sampler.cpp's order: the texels
+// (i0, j0), (i1, j0), (i0, j1), (i1, j1), each weighted by wi wj.
+[[gnu::always_inline]] inline Planes4 srgb_bilinear4(const SamplerView& v, int l, __m128 s,
+                                                     __m128 t) {
+  const SamplerLevel& sl = v.levels[0][l];
+  const int w = sl.width - 2 * v.border, h = sl.height - 2 * v.border;
+  __m128i i0, i1, j0, j1;
+  __m128 ws, wt;
+  srgb_axis4(s, w, v.wrap_s == GL_REPEAT, v.border, i0, i1, ws);
+  srgb_axis4(t, h, v.wrap_t == GL_REPEAT, v.border, j0, j1, wt);
+  const __m128i row = _mm_set1_epi32(sl.width);
+  const __m128i r0 = _mm_madd_epi16(j0, row), r1 = _mm_madd_epi16(j1, row);
+  const __m128 one = _mm_set1_ps(1.0f);
+  const __m128 wi[2] = {_mm_sub_ps(one, ws), ws}, wj[2] = {_mm_sub_ps(one, wt), wt};
+  const __m128i rows[2] = {r0, r1}, cols[2] = {i0, i1};
+  Planes4 acc;
+  for (int jj = 0; jj < 2; ++jj)
+    for (int ii = 0; ii < 2; ++ii) {
+      const __m128 wgt = _mm_mul_ps(wi[ii], wj[jj]);
+      const Planes4 tx = srgb_texels(sl.rgba, _mm_add_epi32(rows[jj], cols[ii]));
+      for (int c = 0; c < 4; ++c) {
+        const __m128 term = _mm_mul_ps(wgt, tx.c[c]);
+        acc.c[c] = (jj == 0 && ii == 0) ? term : _mm_add_ps(acc.c[c], term);
+      }
+    }
+  return acc;
+}
+
+// sample_quads for an sRGB view: the level selection of sample_texture's general path once
+// per quad.
+void srgb_quads(const SamplerView& v, int nq, const float* s, const float* t, const float* lambda,
+                float bias, float (*rgba)[64]) {
+  const float total_bias = std::clamp(bias + v.lod_bias, -kMaxLodBias, kMaxLodBias);
+  const GLenum minf = v.min_filter;
+  const bool mip_linear = minf == GL_LINEAR_MIPMAP_LINEAR;
+  const bool mip_nearest = minf == GL_LINEAR_MIPMAP_NEAREST;
+  for (int q = 0; q < nq; ++q) {
+    float lod = lambda[q] + total_bias;
+    if (!(lod == lod)) lod = 0.0f;
+    lod = std::min(lod, v.max_lod);
+    lod = std::max(lod, v.min_lod);
+    int d0 = v.base_level;
+    float w = 0.0f;
+    if (lod <= v.c || !(mip_linear || mip_nearest)) {
+      if (lod <= v.c && v.mag_filter != GL_LINEAR) {
+        quad_fallback(v, s, t, lambda[q], bias, q, rgba);
+        continue;
+      }
+    } else if (mip_nearest) {
+      const int d = v.base_level + static_cast<int>(std::floor(std::min(lod, 64.0f) + 0.5f));
+      d0 = std::clamp(d, v.base_level, v.max_level);
+    } else {
+      const float lc = std::min(lod, 64.0f);
+      const float fl = std::floor(lc);
+      d0 = v.base_level + static_cast<int>(fl);
+      w = lc - fl;
+      if (d0 >= v.max_level) {
+        d0 = v.max_level;
+        w = 0.0f;
+      }
+    }
+    const __m128 sq = _mm_loadu_ps(s + 4 * q), tq = _mm_loadu_ps(t + 4 * q);
+    const SamplerLevel& sl = v.levels[0][d0];
+    if (!coords_fit(sq, static_cast<float>(sl.width)) ||
+        !coords_fit(tq, static_cast<float>(sl.height))) {
+      quad_fallback(v, s, t, lambda[q], bias, q, rgba);
+      continue;
+    }
+    Planes4 out = srgb_bilinear4(v, d0, sq, tq);
+    if (w > 0.0f) {
+      const Planes4 o1 = srgb_bilinear4(v, d0 + 1, sq, tq);
+      const __m128 wv = _mm_set1_ps(w);
+      for (int c = 0; c < 4; ++c)
+        out.c[c] = _mm_add_ps(out.c[c], _mm_mul_ps(wv, _mm_sub_ps(o1.c[c], out.c[c])));
+    }
+    for (int c = 0; c < 4; ++c)
+      _mm_storeu_ps(&rgba[c][4 * q], out.c[c]);
+  }
+}
+
 void sample_quads_sse2(const SamplerView& v, int nq, const float* s, const float* t,
                        const float* lambda, float bias, float (*rgba)[64]) {
   quads_body<false>(v, nq, s, t, lambda, bias, rgba);
@@ -405,6 +551,7 @@ void sample_quads(const SamplerView& v, int nq, const float* s, const float* t, 
       quad_fallback(v, s, t, lambda[q], bias, q, rgba);
     return;
   }
+  if (v.srgb) return srgb_quads(v, nq, s, t, lambda, bias, rgba);
   if (use_avx2())
     sample_quads_avx2(v, nq, s, t, lambda, bias, rgba);
   else

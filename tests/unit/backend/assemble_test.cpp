@@ -32,10 +32,10 @@ struct Recorder : PrimitiveSink {
                 bool back) override {
     tris.push_back({&a, &b, &c, &prov, a, b, c, back});
   }
-  void line(const PVertex& a, const PVertex& b, const PVertex& prov) override {
+  void line(const PVertex& a, const PVertex& b, const PVertex& prov, bool) override {
     lines.push_back({&a, &b, &prov, a, b});
   }
-  void point(const PVertex& p) override { points.push_back(&p); }
+  void point(const PVertex& p, bool) override { points.push_back(&p); }
 };
 
 RasterState make_state() {

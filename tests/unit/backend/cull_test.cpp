@@ -30,10 +30,10 @@ struct Recorder : PrimitiveSink {
                 bool back) override {
     tris.push_back({a, b, c, prov, back});
   }
-  void line(const PVertex& a, const PVertex& b, const PVertex& prov) override {
+  void line(const PVertex& a, const PVertex& b, const PVertex& prov, bool) override {
     lines.push_back({a, b, prov});
   }
-  void point(const PVertex& p) override { points.push_back(p); }
+  void point(const PVertex& p, bool) override { points.push_back(p); }
 };
 
 RasterState make_state() {

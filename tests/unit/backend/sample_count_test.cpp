@@ -98,10 +98,13 @@ TEST(SampleCount, StencilFailuresDoNotCount) {
   TestFb t(37, 29);
   RasterState rs;
   rs.stencil_test = true;
+  // Both faces: the triangles include back-facing ones, which take the back state (§4.1.5).
   rs.stencil.func = GL_NEVER;
+  rs.stencil_back = rs.stencil;
   EXPECT_EQ(draw(t, rs, v), 0u);
   rs.stencil.func = GL_ALWAYS;
   rs.stencil.depth_pass = GL_INCR; // makes the test "able to change anything"
+  rs.stencil_back = rs.stencil;
   const uint64_t all = reference(RasterState{}, v, t);
   EXPECT_EQ(draw(t, rs, v), all);
 }

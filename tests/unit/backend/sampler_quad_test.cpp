@@ -67,7 +67,8 @@ void expect_same(const SamplerView& v, const std::vector<float>& s, const std::v
   }
 }
 
-void check_matches_sample_texture_for_every_filter_and_wrap() {
+// srgb: the views are of an sRGB texture (GL 2.1 §3.8.15), decoded and filtered in float.
+void check_matches_sample_texture_for_every_filter_and_wrap(bool srgb) {
   Rng rng;
   const GLenum min_filters[] = {GL_NEAREST,
                                 GL_LINEAR,
@@ -86,6 +87,7 @@ void check_matches_sample_texture_for_every_filter_and_wrap() {
           for (GLenum wt : wraps) {
             SamplerView& v = tex.view;
             v.min_filter = minf, v.mag_filter = magf, v.wrap_s = ws, v.wrap_t = wt;
+            v.srgb = srgb;
             v.quads = quad_sampling_supported(v);
             vector_views += v.quads ? 1 : 0;
             std::vector<float> s(64), t(64), lambda(16);
@@ -116,15 +118,27 @@ TEST(SampleQuads, MatchesSampleTextureForEveryFilterAndWrap) {
     SCOPED_TRACE(level == pineda::SimdLevel::Avx512 ? "AVX-512"
                  : level == pineda::SimdLevel::Avx2 ? "AVX2"
                                                     : "baseline");
-    check_matches_sample_texture_for_every_filter_and_wrap();
+    check_matches_sample_texture_for_every_filter_and_wrap(false);
   }
   pineda::set_simd_level(saved);
 }
 
-void check_extreme_coordinates_and_levels_of_detail() {
+TEST(SampleQuads, SrgbMatchesSampleTextureForEveryFilterAndWrap) {
+  const pineda::SimdLevel saved = pineda::simd_level();
+  for (const pineda::SimdLevel level :
+       {pineda::SimdLevel::Baseline, pineda::SimdLevel::Avx2, pineda::SimdLevel::Avx512}) {
+    if (level > pineda::simd_level_supported()) continue;
+    pineda::set_simd_level(level);
+    check_matches_sample_texture_for_every_filter_and_wrap(true);
+  }
+  pineda::set_simd_level(saved);
+}
+
+void check_extreme_coordinates_and_levels_of_detail(bool srgb) {
   Rng rng;
   Texture tex(32, 16, rng);
   SamplerView& v = tex.view;
+  v.srgb = srgb;
   v.min_filter = GL_LINEAR_MIPMAP_LINEAR;
   v.mag_filter = GL_LINEAR;
   const float nan = std::numeric_limits<float>::quiet_NaN();
@@ -164,7 +178,8 @@ TEST(SampleQuads, ExtremeCoordinatesAndLevelsOfDetail) {
     SCOPED_TRACE(level == pineda::SimdLevel::Avx512 ? "AVX-512"
                  : level == pineda::SimdLevel::Avx2 ? "AVX2"
                                                     : "baseline");
-    check_extreme_coordinates_and_levels_of_detail();
+    check_extreme_coordinates_and_levels_of_detail(false);
+    check_extreme_coordinates_and_levels_of_detail(true);
   }
   pineda::set_simd_level(saved);
 }
