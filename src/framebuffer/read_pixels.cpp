@@ -413,36 +413,36 @@ bool read_depth(const Framebuffer& fb, const Span& s, int x, int y, GLenum type,
   const bool sw = pack.swap_bytes;
   switch (type) {
   case GL_UNSIGNED_BYTE:
-    pack_scalar_rows<uint8_t>(fb.depth, fb.width, s, x, y, pl, sw, dst,
+    pack_scalar_rows<uint8_t>(fb.depth, fb.depth_stride, s, x, y, pl, sw, dst,
                               [&](uint32_t d) { return static_cast<uint8_t>(to_unorm(d, max, 0xffu)); });
     return true;
   case GL_BYTE:
-    pack_scalar_rows<int8_t>(fb.depth, fb.width, s, x, y, pl, sw, dst,
+    pack_scalar_rows<int8_t>(fb.depth, fb.depth_stride, s, x, y, pl, sw, dst,
                              [&](uint32_t d) { return static_cast<int8_t>(to_snorm(d, max, 0xffu)); });
     return true;
   case GL_UNSIGNED_SHORT:
-    pack_scalar_rows<uint16_t>(fb.depth, fb.width, s, x, y, pl, sw, dst, [&](uint32_t d) {
+    pack_scalar_rows<uint16_t>(fb.depth, fb.depth_stride, s, x, y, pl, sw, dst, [&](uint32_t d) {
       return static_cast<uint16_t>(to_unorm(d, max, 0xffffu));
     });
     return true;
   case GL_SHORT:
-    pack_scalar_rows<int16_t>(fb.depth, fb.width, s, x, y, pl, sw, dst, [&](uint32_t d) {
+    pack_scalar_rows<int16_t>(fb.depth, fb.depth_stride, s, x, y, pl, sw, dst, [&](uint32_t d) {
       return static_cast<int16_t>(to_snorm(d, max, 0xffffu));
     });
     return true;
   case GL_UNSIGNED_INT:
-    pack_scalar_rows<uint32_t>(fb.depth, fb.width, s, x, y, pl, sw, dst,
+    pack_scalar_rows<uint32_t>(fb.depth, fb.depth_stride, s, x, y, pl, sw, dst,
                                [&](uint32_t d) { return replicate_to_32(d, bits); });
     return true;
   case GL_INT:
-    pack_scalar_rows<int32_t>(fb.depth, fb.width, s, x, y, pl, sw, dst, [&](uint32_t d) {
+    pack_scalar_rows<int32_t>(fb.depth, fb.depth_stride, s, x, y, pl, sw, dst, [&](uint32_t d) {
       return static_cast<int32_t>(to_snorm(d, max, 0xffffffffu));
     });
     return true;
   case GL_FLOAT: {
     // z = d / (2^m - 1): the double quotient is within half a double ulp, so rounding it to
     // float gives the float nearest the exact value.
-    pack_scalar_rows<float>(fb.depth, fb.width, s, x, y, pl, sw, dst, [&](uint32_t d) {
+    pack_scalar_rows<float>(fb.depth, fb.depth_stride, s, x, y, pl, sw, dst, [&](uint32_t d) {
       return static_cast<float>(static_cast<double>(d) / max);
     });
     return true;
@@ -458,31 +458,31 @@ bool read_stencil(const Framebuffer& fb, const Span& s, int x, int y, GLenum typ
   const bool sw = pack.swap_bytes;
   switch (type) {
   case GL_UNSIGNED_BYTE:
-    pack_scalar_rows<uint8_t>(fb.stencil, fb.width, s, x, y, pl, sw, dst, [](uint8_t v) { return v; });
+    pack_scalar_rows<uint8_t>(fb.stencil, fb.stencil_stride, s, x, y, pl, sw, dst, [](uint8_t v) { return v; });
     return true;
   case GL_BYTE:
-    pack_scalar_rows<uint8_t>(fb.stencil, fb.width, s, x, y, pl, sw, dst,
+    pack_scalar_rows<uint8_t>(fb.stencil, fb.stencil_stride, s, x, y, pl, sw, dst,
                               [](uint8_t v) { return static_cast<uint8_t>(v & 0x7f); });
     return true;
   // The wider masks of Table 4.6 keep all 8 stencil bits.
   case GL_UNSIGNED_SHORT:
   case GL_SHORT:
-    pack_scalar_rows<uint16_t>(fb.stencil, fb.width, s, x, y, pl, sw, dst,
+    pack_scalar_rows<uint16_t>(fb.stencil, fb.stencil_stride, s, x, y, pl, sw, dst,
                                [](uint8_t v) { return static_cast<uint16_t>(v); });
     return true;
   case GL_UNSIGNED_INT:
   case GL_INT:
-    pack_scalar_rows<uint32_t>(fb.stencil, fb.width, s, x, y, pl, sw, dst,
+    pack_scalar_rows<uint32_t>(fb.stencil, fb.stencil_stride, s, x, y, pl, sw, dst,
                                [](uint8_t v) { return static_cast<uint32_t>(v); });
     return true;
   case GL_FLOAT:
-    pack_scalar_rows<float>(fb.stencil, fb.width, s, x, y, pl, sw, dst,
+    pack_scalar_rows<float>(fb.stencil, fb.stencil_stride, s, x, y, pl, sw, dst,
                             [](uint8_t v) { return static_cast<float>(v); });
     return true;
   case GL_BITMAP: {
     // §3.6.4 BITMAP placement: bit order per PACK_LSB_FIRST; the index is masked to 1 bit.
     for (int wy = s.y0; wy < s.y1; ++wy) {
-      const uint8_t* src = fb.stencil + static_cast<ptrdiff_t>(wy) * fb.width;
+      const uint8_t* src = fb.stencil + static_cast<ptrdiff_t>(wy) * fb.stencil_stride;
       uint8_t* row = dst + pl.origin + static_cast<size_t>(wy - y) * pl.row_stride;
       for (int wx = s.x0; wx < s.x1; ++wx) {
         const size_t bit = pl.origin_bit + static_cast<size_t>(wx - x);

@@ -23,9 +23,9 @@ namespace {
 void read_framebuffer(const Context* ctx, int x, int y, int w, int h, bool depth, float* out) {
   const size_t n = size_t(w) * size_t(h);
   std::fill(out, out + n * (depth ? 1 : 4), 0.0f);
-  if (ctx->fb.color == nullptr || w == 0 || h == 0) return;
+  if (!ctx->read_fb.present() || w == 0 || h == 0) return;
   PixelStore pack; // tightly packed floats
-  read_pixels(read_view(ctx->fb), x, y, w, h, depth ? GL_DEPTH_COMPONENT : GL_RGBA, GL_FLOAT, pack,
+  read_pixels(ctx->read_fb, x, y, w, h, depth ? GL_DEPTH_COMPONENT : GL_RGBA, GL_FLOAT, pack,
               out);
   if (depth)
     transfer_depth(pixel_transfer_view(ctx), out, n);
@@ -35,7 +35,7 @@ void read_framebuffer(const Context* ctx, int x, int y, int w, int h, bool depth
 
 // The source buffer must exist: a depth texture needs a depth buffer (§3.8.2, §4.3.2).
 bool source_missing(const Context* ctx, bool depth) {
-  return depth ? ctx->fb.depth == nullptr : ctx->fb.color == nullptr;
+  return depth ? ctx->read_fb.depth == nullptr : ctx->read_fb.color == nullptr;
 }
 
 void copy_tex_image(const char* func, int dims, GLenum target, GLint level, GLenum internalformat,
@@ -60,13 +60,15 @@ void copy_tex_image(const char* func, int dims, GLenum target, GLint level, GLen
   if (width - bb > limit || (dims >= 2 && height - bb > limit))
     return record_error(ctx, GL_INVALID_VALUE, func);
   if (info.depth && it.cube) return record_error(ctx, GL_INVALID_OPERATION, func);
+  // ARB_framebuffer_object §4.4.4: an incomplete read framebuffer is not read.
+  if (!read_framebuffer_ready(ctx, func)) return;
   if (source_missing(ctx, info.depth)) return record_error(ctx, GL_INVALID_OPERATION, func);
   TexImage im;
   set_image_info(im, internalformat, info, width, height, 1, border);
   const size_t count = size_t(width) * size_t(height);
   try {
     if (info.depth)
-      im.z.assign(count, 0.0f);
+      im.z.assign(count, 0u);
     else
       im.rgba.assign(count * 4, 0);
     std::vector<float> tmp(count * (info.depth ? 1 : 4));
@@ -93,6 +95,7 @@ void copy_tex_sub_image(const char* func, int dims, GLenum target, GLint level, 
   TexImage* im =
       sub_image_target(ctx, func, it, level, xoffset, yoffset, zoffset, width, height, 1);
   if (im == nullptr) return;
+  if (!read_framebuffer_ready(ctx, func)) return;
   if (source_missing(ctx, im->is_depth)) return record_error(ctx, GL_INVALID_OPERATION, func);
   const size_t count = size_t(width) * size_t(height);
   if (count == 0) return;

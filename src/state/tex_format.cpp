@@ -202,14 +202,11 @@ void rgba_to_texels(const TexFormatInfo& f, const float* rgba, int n, uint8_t* t
   }
 }
 
-void depth_to_texels(const TexFormatInfo& f, const float* z, int n, float* out) {
+void depth_to_texels(const TexFormatInfo& f, const float* z, int n, uint32_t* out) {
+  const double max = depth_texel_max(f.d);
   for (int k = 0; k < n; ++k) {
-    float v = z[k] == z[k] ? std::clamp(z[k], 0.0f, 1.0f) : 0.0f;
-    if (f.d < 32) {
-      const double max = double((1u << f.d) - 1);
-      v = float(std::nearbyint(double(v) * max) / max);
-    }
-    out[k] = v;
+    const float v = z[k] == z[k] ? std::clamp(z[k], 0.0f, 1.0f) : 0.0f;
+    out[k] = uint32_t(std::nearbyint(double(v) * max));
   }
 }
 

@@ -37,7 +37,7 @@ GLenum uncompressed_internal_format(GLenum internalformat);
 void rgba_to_texels(const TexFormatInfo& f, const float* rgba, int n, uint8_t* texels);
 
 // Rounds `n` depth values (clamped to [0,1]) to the format's depth resolution.
-void depth_to_texels(const TexFormatInfo& f, const float* z, int n, float* out);
+void depth_to_texels(const TexFormatInfo& f, const float* z, int n, uint32_t* out);
 
 // The RGBA group a stored texel stands for, as glGetTexImage returns it (§6.1.4): components
 // missing from the base format read as 0 (colour) or 1 (alpha); luminance and intensity appear

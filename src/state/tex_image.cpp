@@ -154,7 +154,7 @@ void tex_image(const char* func, int dims, GLenum target, GLint level, GLint int
   const size_t count = size_t(w) * size_t(h) * size_t(d);
   try {
     if (info.depth) {
-      im.z.assign(count, 0.0f);
+      im.z.assign(count, 0u);
     } else {
       im.rgba.assign(count * 4, 0);
     }
@@ -414,8 +414,9 @@ void downsample_image(const TexImage& src, TexImage& dst, int dims) {
   to.width = dst.width, to.height = dst.height, to.depth = dst.depth;
   to.border = dst.border;
   if (src.is_depth) {
-    dst.z.assign(count, 0.0f);
+    dst.z.assign(count, 0u);
     from.z = src.z.data();
+    from.z_max = depth_texel_max(src.depth_size);
     to.z_out = dst.z.data();
   } else {
     dst.rgba.assign(count * 4, 0);
@@ -519,11 +520,16 @@ void GLAPIENTRY GetTexImage(GLenum target, GLint level, GLenum format, GLenum ty
   if (im.is_depth != (format == GL_DEPTH_COMPONENT))
     return record_error(ctx, GL_INVALID_OPERATION, "glGetTexImage");
   if (pixels == nullptr) return;
+  // What drawing wrote into an attached image is read in its base format.
+  normalize_drawn_images(ctx);
   const size_t count = size_t(im.width) * size_t(im.height) * size_t(im.depth);
   try {
     std::vector<float> tmp;
     if (im.is_depth) {
-      tmp.assign(im.z.begin(), im.z.end());
+      const double max = depth_texel_max(im.depth_size);
+      tmp.reserve(im.z.size());
+      for (const uint32_t z : im.z)
+        tmp.push_back(float(double(z) / max));
     } else {
       tmp.resize(count * 4);
       // Luminance read-backs take L from R alone (not R + G + B as ReadPixels does), as
