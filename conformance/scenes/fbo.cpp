@@ -115,7 +115,7 @@ void window_again(const Fbo& fbo, const Frame& frame) {
 
 PINEDA_SCENE(fbo_render_to_texture,
              "A depth-tested scene rendered into an RGBA8 texture with a depth renderbuffer, "
-             "then drawn in the window, magnified and minified, NEAREST and LINEAR") {
+             "then drawn in the window: magnified (LINEAR), 1:1 (NEAREST), halved (LINEAR)") {
   const Fbo fbo;
   clear_frame(0.2f, 0.2f, 0.25f);
   const GLuint tex = new_texture(GL_TEXTURE_2D, GL_LINEAR, GL_LINEAR);
@@ -134,8 +134,10 @@ PINEDA_SCENE(fbo_render_to_texture,
   textured_quad(8, 8, 8 + 192, 8 + 160); // magnified, LINEAR
   glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
   glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
-  textured_quad(8, 176, 8 + 96, 176 + 80);  // 1:1
-  textured_quad(120, 176, 120 + 48, 176 + 40); // minified
+  textured_quad(8, 176, 8 + 96, 176 + 80); // 1:1
+  // Halved with LINEAR (NEAREST would sample exactly on texel corners, which GL leaves open).
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+  textured_quad(120, 176, 120 + 48, 176 + 40);
   glDisable(GL_TEXTURE_2D);
   glTexEnvi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_MODULATE);
   fbo.del(1, &f);
@@ -356,7 +358,7 @@ PINEDA_SCENE(fbo_draw_buffers,
   glTexEnvi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_REPLACE);
   for (int i = 0; i < 3; ++i) {
     glBindTexture(GL_TEXTURE_2D, tex[i]);
-    textured_quad(4.0f + i * 84.0f, 60, 4.0f + i * 84.0f + 80, 140);
+    textured_quad(4.0f + i * 84.0f, 60, 4.0f + i * 84.0f + 64, 124); // 1:1
   }
   glDisable(GL_TEXTURE_2D);
   glTexEnvi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_MODULATE);

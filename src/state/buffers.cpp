@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include <GL/glext.h>
+
 #include "state/api_util.h"
 #include "dispatch.h"
 #include "framebuffer/read_pixels.h"
@@ -169,7 +171,11 @@ void GLAPIENTRY ReadPixels(GLint x, GLint y, GLsizei w, GLsizei h, GLenum format
     return record_error(ctx, GL_INVALID_OPERATION, "glReadPixels");
   if (format == GL_STENCIL_INDEX && fb.stencil == nullptr)
     return record_error(ctx, GL_INVALID_OPERATION, "glReadPixels");
-  const bool color = format != GL_DEPTH_COMPONENT && format != GL_STENCIL_INDEX;
+  // EXT_packed_depth_stencil: DEPTH_STENCIL needs both buffers.
+  if (format == GL_DEPTH_STENCIL && (fb.depth == nullptr || fb.stencil == nullptr))
+    return record_error(ctx, GL_INVALID_OPERATION, "glReadPixels");
+  const bool color =
+      format != GL_DEPTH_COMPONENT && format != GL_STENCIL_INDEX && format != GL_DEPTH_STENCIL;
   // GL 3.0 §4.3.2: reading colour with the read buffer NONE is INVALID_OPERATION.
   if (color && fb.color == nullptr && fb.present())
     return record_error(ctx, GL_INVALID_OPERATION, "glReadPixels");

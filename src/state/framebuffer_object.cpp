@@ -186,6 +186,12 @@ bool attached_image(const Attachment& a, AttachedImage& out) {
     out.depth = im.z.data() + origin;
     out.depth_bits = im.depth_size;
     out.depth_stride = im.width;
+    // A DEPTH_STENCIL texture (EXT_packed_depth_stencil) is depth- and stencil-renderable.
+    if (!im.stencil.empty()) {
+      out.stencil = im.stencil.data() + origin;
+      out.stencil_stride = im.width;
+      out.stencil_size = im.stencil_size;
+    }
   } else {
     if (im.rgba.empty()) return false;
     out.rgba = im.rgba.data() + origin * 4;

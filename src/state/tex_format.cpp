@@ -1,6 +1,8 @@
 // Texture internal formats (GL 2.1 §3.8.1 Tables 3.15-3.17).
 #include "state/tex_format.h"
 
+#include <GL/glext.h>
+
 #include <algorithm>
 #include <cmath>
 
@@ -161,6 +163,12 @@ bool lookup_internal_format(GLint internalformat, TexFormatInfo& out) {
     return true;
   case GL_DEPTH_COMPONENT32:
     out = depth(32);
+    return true;
+  // EXT_packed_depth_stencil.
+  case GL_DEPTH_STENCIL:
+  case GL_DEPTH24_STENCIL8:
+    out = depth(24);
+    out.s = 8;
     return true;
   default:
     return false;

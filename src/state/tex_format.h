@@ -3,7 +3,8 @@
 // stored texels. Colour texels are stored as four 8-bit components already expanded by base
 // format (Table 3.23); components the format keeps with fewer than 8 bits are rounded to that
 // resolution first, as Mesa llvmpipe stores RGBA4, RGB5_A1, R3_G3_B2 ... in packed formats.
-// Depth texels are floats rounded to the depth resolution.
+// Depth texels are unsigned integers of the depth resolution, as a depth buffer stores them;
+// DEPTH_STENCIL images (EXT_packed_depth_stencil) have an 8-bit stencil index beside.
 #pragma once
 
 #include <GL/gl.h>
@@ -20,6 +21,7 @@ struct TexFormatInfo {
   // Resolutions reported by glGetTexLevelParameter (those llvmpipe reports: 12-bit components
   // are kept in 16). Stored resolution is min(size, 8) for colour.
   uint8_t r = 0, g = 0, b = 0, a = 0, l = 0, i = 0, d = 0;
+  uint8_t s = 0; // stencil bits: 8 for DEPTH_STENCIL formats (depth is then true too)
 };
 
 // The format `internalformat` names (Tables 3.16, 3.17 and the legacy 1-4), or false for a

@@ -712,3 +712,102 @@ TEST_F(FboTest, DisplayListsExecuteFramebufferCommandsAtOnce) {
 }
 
 } // namespace
+
+namespace {
+
+// EXT_packed_depth_stencil: DEPTH_STENCIL textures and pixel transfers, CopyPixels of both.
+class PackedDepthStencilTest : public GLTest {};
+
+TEST_F(PackedDepthStencilTest, TexturesPixelTransfersAndAttachments) {
+  GLuint t = 0;
+  glGenTextures(1, &t);
+  glBindTexture(GL_TEXTURE_2D, t);
+  std::vector<GLuint> texels(4 * 4);
+  for (int i = 0; i < 16; ++i)
+    texels[i] = (GLuint(i * 1000000) << 8) | GLuint(i * 3);
+  glTexImage2D(GL_TEXTURE_2D, 0, GL_DEPTH24_STENCIL8, 4, 4, 0, GL_DEPTH_STENCIL,
+               GL_UNSIGNED_INT_24_8, texels.data());
+  EXPECT_EQ(glGetError(), GLenum(GL_NO_ERROR));
+  GLint v = 0;
+  glGetTexLevelParameteriv(GL_TEXTURE_2D, 0, GL_TEXTURE_STENCIL_SIZE, &v);
+  EXPECT_EQ(v, 8);
+  glGetTexLevelParameteriv(GL_TEXTURE_2D, 0, GL_TEXTURE_DEPTH_SIZE, &v);
+  EXPECT_EQ(v, 24);
+  std::vector<GLuint> back(16);
+  glGetTexImage(GL_TEXTURE_2D, 0, GL_DEPTH_STENCIL, GL_UNSIGNED_INT_24_8, back.data());
+  EXPECT_EQ(back, texels);
+  // Errors: the type and format go together, and with the internal format.
+  glTexImage2D(GL_TEXTURE_2D, 0, GL_DEPTH24_STENCIL8, 4, 4, 0, GL_DEPTH_STENCIL,
+               GL_UNSIGNED_INT, nullptr);
+  EXPECT_EQ(glGetError(), GLenum(GL_INVALID_ENUM));
+  glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA, 4, 4, 0, GL_RGBA, GL_UNSIGNED_INT_24_8, nullptr);
+  EXPECT_EQ(glGetError(), GLenum(GL_INVALID_OPERATION));
+  glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA, 4, 4, 0, GL_DEPTH_STENCIL, GL_UNSIGNED_INT_24_8,
+               nullptr);
+  EXPECT_EQ(glGetError(), GLenum(GL_INVALID_OPERATION));
+  glTexImage2D(GL_TEXTURE_2D, 0, GL_DEPTH_STENCIL, 4, 4, 0, GL_DEPTH_COMPONENT, GL_FLOAT,
+               nullptr);
+  EXPECT_EQ(glGetError(), GLenum(GL_INVALID_OPERATION));
+  glTexSubImage2D(GL_TEXTURE_2D, 0, 1, 1, 2, 2, GL_DEPTH_COMPONENT, GL_FLOAT, texels.data());
+  EXPECT_EQ(glGetError(), GLenum(GL_INVALID_OPERATION));
+  const GLuint patch[4] = {0xffffff01u, 0xffffff02u, 0xffffff03u, 0xffffff04u};
+  glTexSubImage2D(GL_TEXTURE_2D, 0, 1, 1, 2, 2, GL_DEPTH_STENCIL, GL_UNSIGNED_INT_24_8, patch);
+  EXPECT_EQ(glGetError(), GLenum(GL_NO_ERROR));
+  glGetTexImage(GL_TEXTURE_2D, 0, GL_DEPTH_STENCIL, GL_UNSIGNED_INT_24_8, back.data());
+  EXPECT_EQ(back[5], 0xffffff01u);
+  EXPECT_EQ(back[10], 0xffffff04u);
+  EXPECT_EQ(back[0], texels[0]);
+  // Attached at both points, drawn into with depth and stencil tests.
+  GLuint color = 0, f = 0;
+  glGenRenderbuffers(1, &color);
+  glBindRenderbuffer(GL_RENDERBUFFER, color);
+  glRenderbufferStorage(GL_RENDERBUFFER, GL_RGBA8, 4, 4);
+  glGenFramebuffers(1, &f);
+  glBindFramebuffer(GL_FRAMEBUFFER, f);
+  glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, color);
+  glFramebufferTexture2D(GL_FRAMEBUFFER, GL_DEPTH_STENCIL_ATTACHMENT, GL_TEXTURE_2D, t, 0);
+  ASSERT_EQ(glCheckFramebufferStatus(GL_FRAMEBUFFER), GLenum(GL_FRAMEBUFFER_COMPLETE));
+  glGetIntegerv(GL_STENCIL_BITS, &v);
+  EXPECT_EQ(v, 8);
+  glViewport(0, 0, 4, 4);
+  glClearDepth(0.25);
+  glClearStencil(0x33);
+  glClear(GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT);
+  GLuint ds[16] = {};
+  glReadPixels(0, 0, 4, 4, GL_DEPTH_STENCIL, GL_UNSIGNED_INT_24_8, ds);
+  EXPECT_EQ(ds[7], (0x400000u << 8) | 0x33u);
+  // DrawPixels and CopyPixels of DEPTH_STENCIL.
+  glDepthFunc(GL_ALWAYS);
+  glEnable(GL_DEPTH_TEST);
+  glRasterPos2f(-1, -1);
+  const GLuint one = (0x800000u << 8) | 0x5au;
+  glDrawPixels(1, 1, GL_DEPTH_STENCIL, GL_UNSIGNED_INT_24_8, &one);
+  glRasterPos2f(0, 0); // window (2, 2)
+  glCopyPixels(0, 0, 1, 1, GL_DEPTH_STENCIL);
+  glDisable(GL_DEPTH_TEST);
+  glDepthFunc(GL_LESS);
+  glReadPixels(0, 0, 4, 4, GL_DEPTH_STENCIL, GL_UNSIGNED_INT_24_8, ds);
+  EXPECT_EQ(ds[0], one);
+  EXPECT_EQ(ds[2 * 4 + 2], one);
+  EXPECT_EQ(ds[1], (0x400000u << 8) | 0x33u);
+  glReadPixels(0, 0, 1, 1, GL_DEPTH_STENCIL, GL_FLOAT, ds);
+  EXPECT_EQ(glGetError(), GLenum(GL_INVALID_ENUM));
+  glReadPixels(0, 0, 1, 1, GL_RGBA, GL_UNSIGNED_INT_24_8, ds);
+  EXPECT_EQ(glGetError(), GLenum(GL_INVALID_OPERATION));
+  glCopyPixels(0, 0, 1, 1, GL_DEPTH_STENCIL_ATTACHMENT);
+  EXPECT_EQ(glGetError(), GLenum(GL_INVALID_ENUM));
+  glBindFramebuffer(GL_FRAMEBUFFER, 0);
+  glDeleteFramebuffers(1, &f);
+  // The window of this fixture has a depth and a stencil buffer: CopyPixels of both there.
+  glViewport(0, 0, kW, kH);
+  glClearDepth(0.25);
+  glClearStencil(0x33);
+  glClear(GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT);
+  glRasterPos2f(0, 0);
+  glCopyPixels(0, 0, 2, 2, GL_DEPTH_STENCIL);
+  glReadPixels(kW / 2, kH / 2, 1, 1, GL_DEPTH_STENCIL, GL_UNSIGNED_INT_24_8, ds);
+  EXPECT_EQ(ds[0], (0x400000u << 8) | 0x33u);
+  EXPECT_EQ(glGetError(), GLenum(GL_NO_ERROR));
+}
+
+} // namespace
