@@ -32,12 +32,20 @@ GLenum client_format_type_error(GLenum format, GLenum type) {
   return check_pixel_format_type(format, type);
 }
 
-// §3.8.1, EXT_packed_depth_stencil: colour data for colour images, DEPTH_COMPONENT for depth
-// images, DEPTH_STENCIL for depth-stencil images (INVALID_OPERATION otherwise).
-bool format_matches(bool depth, bool stencil, GLenum format) {
-  if (stencil) return format == GL_DEPTH_STENCIL;
-  if (depth) return format == GL_DEPTH_COMPONENT;
-  return format != GL_DEPTH_COMPONENT && format != GL_DEPTH_STENCIL;
+// §3.8.1 as GL 3.3 words it with EXT_packed_depth_stencil: images of a DEPTH_COMPONENT or
+// DEPTH_STENCIL base format take DEPTH_COMPONENT or DEPTH_STENCIL data (a depth image keeps
+// the depth of DEPTH_STENCIL groups; a depth-stencil image given depth alone keeps its
+// stencil), other images neither (INVALID_OPERATION otherwise).
+bool format_matches(bool depth, GLenum format) {
+  const bool depth_data = format == GL_DEPTH_COMPONENT || format == GL_DEPTH_STENCIL;
+  return depth == depth_data;
+}
+
+// STENCIL_INDEX data is INVALID_ENUM for texture images (§3.8.1), except for depth images,
+// where the mismatch of base format and data is the error (INVALID_OPERATION), as GL 3.3 and
+// Mesa order them.
+GLenum stencil_data_error(bool depth) {
+  return depth ? GL_INVALID_OPERATION : GL_INVALID_ENUM;
 }
 
 // 1D and 2D images ignore IMAGE_HEIGHT and SKIP_IMAGES (§3.8.1).
@@ -134,6 +142,11 @@ void tex_image(const char* func, int dims, GLenum target, GLint level, GLint int
   ImageTarget it;
   if (!image_target(ctx, target, dims, true, it))
     return record_error(ctx, GL_INVALID_ENUM, func, target);
+  if (format == GL_STENCIL_INDEX) {
+    TexFormatInfo f;
+    const bool depth_image = lookup_internal_format(internalformat, f) && f.depth;
+    return record_error(ctx, stencil_data_error(depth_image), func, format);
+  }
   const GLenum fe = client_format_type_error(format, type);
   if (fe == GL_INVALID_ENUM) return record_error(ctx, fe, func, format);
   if (level < 0 || level >= it.max_levels) return record_error(ctx, GL_INVALID_VALUE, func);
@@ -150,7 +163,7 @@ void tex_image(const char* func, int dims, GLenum target, GLint level, GLint int
   if (fe != GL_NO_ERROR) return record_error(ctx, fe, func);
   // §3.8.1: depth formats go only with 1D and 2D targets, and with DEPTH_COMPONENT data.
   if (info.depth && (dims == 3 || it.cube)) return record_error(ctx, GL_INVALID_OPERATION, func);
-  if (!format_matches(info.depth, info.s != 0, format))
+  if (!format_matches(info.depth, format))
     return record_error(ctx, GL_INVALID_OPERATION, func);
   // The sizes the implementation supports at this level (§3.8.1, Table 6.36 limits).
   const int limit = it.max_size >> level;
@@ -208,11 +221,13 @@ void tex_sub_image(const char* func, int dims, GLenum target, GLint level, GLint
   if (!image_target(ctx, target, dims, false, it))
     return record_error(ctx, GL_INVALID_ENUM, func, target);
   const GLenum fe = client_format_type_error(format, type);
-  if (fe == GL_INVALID_ENUM) return record_error(ctx, fe, func, format);
+  if (fe == GL_INVALID_ENUM && format != GL_STENCIL_INDEX)
+    return record_error(ctx, fe, func, format);
   TexImage* im = sub_image_target(ctx, func, it, level, x, y, z, w, h, d);
   if (im == nullptr) return;
+  if (format == GL_STENCIL_INDEX) return record_error(ctx, stencil_data_error(im->is_depth), func);
   if (fe != GL_NO_ERROR) return record_error(ctx, fe, func);
-  if (!format_matches(im->is_depth, !im->stencil.empty(), format))
+  if (!format_matches(im->is_depth, format))
     return record_error(ctx, GL_INVALID_OPERATION, func);
   const size_t count = size_t(w) * size_t(h) * size_t(d);
   if (count == 0 || pixels == nullptr) return;
@@ -578,8 +593,8 @@ void GLAPIENTRY GetTexImage(GLenum target, GLint level, GLenum format, GLenum ty
   const TexImage& im = it.tex->images[it.face][level];
   if (im.width == 0) return;
   // A depth-stencil image reads back as DEPTH_STENCIL or as its depth alone.
-  const bool ok = format_matches(im.is_depth, !im.stencil.empty(), format) ||
-                  (!im.stencil.empty() && format == GL_DEPTH_COMPONENT);
+  const bool ok = format_matches(im.is_depth, format) &&
+                  (format != GL_DEPTH_STENCIL || !im.stencil.empty());
   if (!ok) return record_error(ctx, GL_INVALID_OPERATION, "glGetTexImage");
   if (pixels == nullptr) return;
   // What drawing wrote into an attached image is read in its base format.

@@ -745,11 +745,20 @@ TEST_F(PackedDepthStencilTest, TexturesPixelTransfersAndAttachments) {
   glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA, 4, 4, 0, GL_DEPTH_STENCIL, GL_UNSIGNED_INT_24_8,
                nullptr);
   EXPECT_EQ(glGetError(), GLenum(GL_INVALID_OPERATION));
-  glTexImage2D(GL_TEXTURE_2D, 0, GL_DEPTH_STENCIL, 4, 4, 0, GL_DEPTH_COMPONENT, GL_FLOAT,
+  glTexImage2D(GL_TEXTURE_2D, 0, GL_DEPTH24_STENCIL8, 4, 4, 0, GL_STENCIL_INDEX, GL_INT,
                nullptr);
   EXPECT_EQ(glGetError(), GLenum(GL_INVALID_OPERATION));
-  glTexSubImage2D(GL_TEXTURE_2D, 0, 1, 1, 2, 2, GL_DEPTH_COMPONENT, GL_FLOAT, texels.data());
-  EXPECT_EQ(glGetError(), GLenum(GL_INVALID_OPERATION));
+  glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, 4, 4, 0, GL_STENCIL_INDEX, GL_INT, nullptr);
+  EXPECT_EQ(glGetError(), GLenum(GL_INVALID_ENUM));
+  // Depth data into a depth-stencil image keeps its stencil; depth-stencil data into a depth
+  // image keeps the depth (GL 3.3 §3.8.3).
+  const float half = 0.5f;
+  glTexSubImage2D(GL_TEXTURE_2D, 0, 0, 3, 1, 1, GL_DEPTH_COMPONENT, GL_FLOAT, &half);
+  EXPECT_EQ(glGetError(), GLenum(GL_NO_ERROR));
+  glGetTexImage(GL_TEXTURE_2D, 0, GL_DEPTH_STENCIL, GL_UNSIGNED_INT_24_8, back.data());
+  EXPECT_EQ(back[12], (0x800000u << 8) | (texels[12] & 0xffu));
+  glTexSubImage2D(GL_TEXTURE_2D, 0, 0, 3, 1, 1, GL_DEPTH_STENCIL, GL_UNSIGNED_INT_24_8,
+                  &texels[12]);
   const GLuint patch[4] = {0xffffff01u, 0xffffff02u, 0xffffff03u, 0xffffff04u};
   glTexSubImage2D(GL_TEXTURE_2D, 0, 1, 1, 2, 2, GL_DEPTH_STENCIL, GL_UNSIGNED_INT_24_8, patch);
   EXPECT_EQ(glGetError(), GLenum(GL_NO_ERROR));
