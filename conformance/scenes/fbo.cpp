@@ -428,3 +428,58 @@ PINEDA_SCENE(fbo_depth_texture_shadow,
   fbo.del(1, &f);
   glDeleteTextures(1, &depth);
 }
+
+PINEDA_SCENE(fbo_blit,
+             "glBlitFramebuffer from a rendered framebuffer object into the window: 1:1, "
+             "doubled NEAREST and LINEAR, a third NEAREST, mirrored in x and y, scissored, and "
+             "depth with stencil") {
+  const Fbo fbo;
+  auto blit = proc<PFNGLBLITFRAMEBUFFERPROC>("glBlitFramebuffer");
+  clear_frame(0.15f, 0.1f, 0.1f);
+  const GLuint color = fbo.renderbuffer(GL_RGBA8, 60, 48);
+  const GLuint ds = fbo.renderbuffer(GL_DEPTH24_STENCIL8, 60, 48);
+  const GLuint f = fbo.framebuffer();
+  fbo.rb(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, color);
+  fbo.rb(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, ds);
+  fbo.rb(GL_FRAMEBUFFER, GL_STENCIL_ATTACHMENT, GL_RENDERBUFFER, ds);
+  fbo.check();
+  glClearColor(0.2f, 0.5f, 0.3f, 1.0f);
+  glClearStencil(0);
+  glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT);
+  glEnable(GL_STENCIL_TEST);
+  glStencilFunc(GL_ALWAYS, 1, 0xff);
+  glStencilOp(GL_KEEP, GL_KEEP, GL_REPLACE);
+  inner_scene(60, 48, 51);
+  glDisable(GL_STENCIL_TEST);
+  fbo.bind(GL_DRAW_FRAMEBUFFER, 0);
+  window_projection(frame);
+  blit(0, 0, 60, 48, 4, 4, 64, 52, GL_COLOR_BUFFER_BIT, GL_NEAREST);         // 1:1
+  blit(0, 0, 60, 48, 70, 4, 190, 100, GL_COLOR_BUFFER_BIT, GL_NEAREST);      // doubled
+  blit(0, 0, 60, 48, 4, 104, 124, 200, GL_COLOR_BUFFER_BIT, GL_LINEAR);      // doubled, LINEAR
+  blit(0, 0, 60, 48, 200, 4, 220, 20, GL_COLOR_BUFFER_BIT, GL_NEAREST);      // a third
+  blit(0, 0, 60, 48, 190, 100, 130, 52, GL_COLOR_BUFFER_BIT, GL_NEAREST);    // mirrored
+  glEnable(GL_SCISSOR_TEST);
+  glScissor(140, 110, 40, 30);
+  blit(0, 0, 60, 48, 130, 104, 250, 200, GL_COLOR_BUFFER_BIT, GL_NEAREST);   // scissored
+  glDisable(GL_SCISSOR_TEST);
+  // Depth and stencil into the window's buffers, then shown: a quad where the stencil is 1
+  // and the depth test passes against the blitted depths.
+  glClear(GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT);
+  blit(0, 0, 60, 48, 190, 200, 250, 248, GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT,
+       GL_NEAREST);
+  glEnable(GL_STENCIL_TEST);
+  glStencilFunc(GL_EQUAL, 1, 0xff);
+  glStencilOp(GL_KEEP, GL_KEEP, GL_KEEP);
+  glEnable(GL_DEPTH_TEST);
+  glDepthFunc(GL_GREATER);
+  glColor3f(1.0f, 1.0f, 0.0f);
+  glRectf(186, 196, 254, 252); // at depth 0.5
+  glDepthFunc(GL_LESS);
+  glDisable(GL_DEPTH_TEST);
+  glDisable(GL_STENCIL_TEST);
+  glColor3f(1, 1, 1);
+  fbo.bind(GL_FRAMEBUFFER, 0);
+  fbo.del(1, &f);
+  fbo.del_rb(1, &color);
+  fbo.del_rb(1, &ds);
+}

@@ -820,3 +820,128 @@ TEST_F(PackedDepthStencilTest, TexturesPixelTransfersAndAttachments) {
 }
 
 } // namespace
+
+namespace {
+
+// EXT_framebuffer_blit: errors, NEAREST and LINEAR scaling, mirroring, depth and stencil, the
+// scissor test, buffers missing from one side.
+class BlitTest : public GLTest {
+protected:
+  void SetUp() override {
+    GLTest::SetUp();
+    glGenRenderbuffers(3, rb);
+    glBindRenderbuffer(GL_RENDERBUFFER, rb[0]);
+    glRenderbufferStorage(GL_RENDERBUFFER, GL_RGBA8, 8, 8);
+    glBindRenderbuffer(GL_RENDERBUFFER, rb[1]);
+    glRenderbufferStorage(GL_RENDERBUFFER, GL_DEPTH24_STENCIL8, 8, 8);
+    glBindRenderbuffer(GL_RENDERBUFFER, rb[2]);
+    glRenderbufferStorage(GL_RENDERBUFFER, GL_DEPTH_COMPONENT16, 8, 8);
+    glGenFramebuffers(1, &fbo);
+    glBindFramebuffer(GL_FRAMEBUFFER, fbo);
+    glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, rb[0]);
+    glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_STENCIL_ATTACHMENT, GL_RENDERBUFFER, rb[1]);
+    // A 2x2 checker of four colours, each a 4x4 block.
+    const GLubyte colors[4][4] = {{255, 0, 0, 255}, {0, 255, 0, 255}, {0, 0, 255, 255},
+                                  {255, 255, 255, 255}};
+    std::vector<GLubyte> px(8 * 8 * 4);
+    for (int y = 0; y < 8; ++y)
+      for (int x = 0; x < 8; ++x)
+        for (int k = 0; k < 4; ++k)
+          px[(y * 8 + x) * 4 + k] = colors[(y / 4) * 2 + x / 4][k];
+    glViewport(0, 0, 8, 8);
+    glRasterPos2f(-1, -1);
+    glDrawPixels(8, 8, GL_RGBA, GL_UNSIGNED_BYTE, px.data());
+    glClearDepth(0.75);
+    glClearStencil(7);
+    glClear(GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT);
+    glBindFramebuffer(GL_READ_FRAMEBUFFER, fbo);
+    glBindFramebuffer(GL_DRAW_FRAMEBUFFER, 0);
+    ASSERT_EQ(glGetError(), GLenum(GL_NO_ERROR));
+  }
+  GLuint rb[3] = {}, fbo = 0;
+};
+
+TEST_F(BlitTest, Errors) {
+  glBlitFramebuffer(0, 0, 8, 8, 0, 0, 8, 8, GL_COLOR_BUFFER_BIT | GL_ACCUM_BUFFER_BIT, GL_NEAREST);
+  EXPECT_EQ(glGetError(), GLenum(GL_INVALID_VALUE));
+  glBlitFramebuffer(0, 0, 8, 8, 0, 0, 8, 8, GL_COLOR_BUFFER_BIT, GL_LINEAR_MIPMAP_LINEAR);
+  EXPECT_EQ(glGetError(), GLenum(GL_INVALID_ENUM));
+  glBlitFramebuffer(0, 0, 8, 8, 0, 0, 8, 8, GL_DEPTH_BUFFER_BIT, GL_LINEAR);
+  EXPECT_EQ(glGetError(), GLenum(GL_INVALID_OPERATION));
+  glBlitFramebuffer(0, 0, 8, 8, 0, 0, 8, 8, GL_STENCIL_BUFFER_BIT, GL_LINEAR);
+  EXPECT_EQ(glGetError(), GLenum(GL_INVALID_OPERATION));
+  // Depth formats differ (24 bits against 16).
+  GLuint other = 0;
+  glGenFramebuffers(1, &other);
+  glBindFramebuffer(GL_FRAMEBUFFER, other);
+  glFramebufferRenderbuffer(GL_DRAW_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, rb[2]);
+  glDrawBuffer(GL_NONE);
+  glReadBuffer(GL_NONE); // else incomplete (its read buffer names no image)
+  glBindFramebuffer(GL_READ_FRAMEBUFFER, fbo);
+  glBlitFramebuffer(0, 0, 8, 8, 0, 0, 8, 8, GL_DEPTH_BUFFER_BIT, GL_NEAREST);
+  EXPECT_EQ(glGetError(), GLenum(GL_INVALID_OPERATION));
+  // Incomplete draw framebuffer.
+  glDrawBuffer(GL_COLOR_ATTACHMENT3);
+  glBlitFramebuffer(0, 0, 8, 8, 0, 0, 8, 8, GL_COLOR_BUFFER_BIT, GL_NEAREST);
+  EXPECT_EQ(glGetError(), GLenum(GL_INVALID_FRAMEBUFFER_OPERATION));
+  glBindFramebuffer(GL_DRAW_FRAMEBUFFER, 0);
+  glDeleteFramebuffers(1, &other);
+  glBegin(GL_POINTS);
+  glBlitFramebuffer(0, 0, 8, 8, 0, 0, 8, 8, GL_COLOR_BUFFER_BIT, GL_NEAREST);
+  glEnd();
+  EXPECT_EQ(glGetError(), GLenum(GL_INVALID_OPERATION));
+}
+
+TEST_F(BlitTest, ColorScaledMirroredAndScissored) {
+  // 1:1.
+  glBlitFramebuffer(0, 0, 8, 8, 0, 0, 8, 8, GL_COLOR_BUFFER_BIT, GL_NEAREST);
+  EXPECT_EQ(pixel(1, 1), 0xff0000ffu);
+  EXPECT_EQ(pixel(6, 6), 0xffffffffu);
+  // Doubled, NEAREST: block edges at 8.
+  glBlitFramebuffer(0, 0, 8, 8, 16, 16, 32, 32, GL_COLOR_BUFFER_BIT, GL_NEAREST);
+  EXPECT_EQ(pixel(23, 16), 0xff0000ffu);
+  EXPECT_EQ(pixel(24, 16), 0xff00ff00u);
+  EXPECT_EQ(pixel(31, 31), 0xffffffffu);
+  // Mirrored in x and y.
+  glBlitFramebuffer(0, 0, 8, 8, 8, 8, 0, 0, GL_COLOR_BUFFER_BIT, GL_NEAREST);
+  EXPECT_EQ(pixel(1, 1), 0xffffffffu);
+  EXPECT_EQ(pixel(6, 6), 0xff0000ffu);
+  // LINEAR, doubled: at the block edge the colours mix, away from it they do not.
+  glBlitFramebuffer(0, 0, 8, 8, 16, 0, 32, 16, GL_COLOR_BUFFER_BIT, GL_LINEAR);
+  EXPECT_EQ(pixel(16, 0), 0xff0000ffu);
+  const uint32_t mid = pixel(23, 0);
+  EXPECT_GT(mid & 0xffu, 100u);
+  EXPECT_GT((mid >> 8) & 0xffu, 30u);
+  // Scissored: only the box is written.
+  glClear(GL_COLOR_BUFFER_BIT);
+  glEnable(GL_SCISSOR_TEST);
+  glScissor(2, 2, 2, 2);
+  glBlitFramebuffer(0, 0, 8, 8, 0, 0, 8, 8, GL_COLOR_BUFFER_BIT, GL_NEAREST);
+  glDisable(GL_SCISSOR_TEST);
+  EXPECT_EQ(pixel(2, 2), 0xff0000ffu);
+  EXPECT_EQ(pixel(1, 1), 0u);
+  EXPECT_EQ(pixel(4, 4), 0u);
+  // Source pixels outside the read framebuffer write nothing.
+  glBlitFramebuffer(-8, 0, 8, 8, 0, 0, 16, 8, GL_COLOR_BUFFER_BIT, GL_NEAREST);
+  EXPECT_EQ(pixel(0, 0), 0u);
+  EXPECT_EQ(pixel(8, 0), 0xff0000ffu);
+  EXPECT_EQ(glGetError(), GLenum(GL_NO_ERROR));
+}
+
+TEST_F(BlitTest, DepthAndStencil) {
+  // The window of the fixture has 24 depth bits and 8 stencil bits, as the renderbuffer.
+  glBlitFramebuffer(0, 0, 8, 8, 4, 4, 12, 12, GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT,
+                    GL_NEAREST);
+  EXPECT_EQ(glGetError(), GLenum(GL_NO_ERROR));
+  glBindFramebuffer(GL_READ_FRAMEBUFFER, 0);
+  GLuint ds = 0;
+  glReadPixels(5, 5, 1, 1, GL_DEPTH_STENCIL, GL_UNSIGNED_INT_24_8, &ds);
+  EXPECT_EQ(ds, (0xbfffffu << 8) | 7u); // 0.75 in 24 bits
+  glReadPixels(2, 2, 1, 1, GL_DEPTH_STENCIL, GL_UNSIGNED_INT_24_8, &ds);
+  EXPECT_EQ(ds & 0xffu, 0u); // untouched
+  // Colour was not in the mask.
+  EXPECT_EQ(pixel(5, 5), 0u);
+  EXPECT_EQ(glGetError(), GLenum(GL_NO_ERROR));
+}
+
+} // namespace
