@@ -45,4 +45,11 @@ constexpr float kMaxLodBias = 16.0f;                          // MAX_TEXTURE_LOD
 // The largest texel store of one image (4 bytes per texel); larger images are OUT_OF_MEMORY.
 constexpr uint64_t kMaxTextureImageBytes = uint64_t(1) << 30;
 
+// ---- framebuffer objects (ARB_framebuffer_object, Table 6.X "Framebuffer Dependent Values") ----
+constexpr int kMaxDrawBuffers = 8;        // MAX_DRAW_BUFFERS (GL 2.0 §4.2.1)
+constexpr int kMaxColorAttachments = 8;   // MAX_COLOR_ATTACHMENTS
+constexpr int kMaxRenderbufferSize = 16384; // MAX_RENDERBUFFER_SIZE, as MAX_VIEWPORT_DIMS
+// The largest storage of one renderbuffer; larger ones are OUT_OF_MEMORY (§4.4.2.1).
+constexpr uint64_t kMaxRenderbufferBytes = uint64_t(1) << 28;
+
 } // namespace pineda

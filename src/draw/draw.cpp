@@ -170,7 +170,7 @@ DrawRegion draw_region(const RasterState& rs, const FragCtx& frag, GLenum mode,
   draw_primitives(dc, mode, verts, indices, count);
 }
 
-// With FRONT_AND_BACK (GL 2.1 §4.2.1), the second buffer first, from the same depth and
+// With FRONT_AND_BACK (GL 2.1 §4.2.1) or several draw buffers, the further buffers first, from the same depth and
 // stencil values (draw_buffers.h), then the primary one.
 [[gnu::noinline]] void rasterize_both_buffers(const DrawCall& dc, RasterWorkers* workers,
                                               GLenum mode, const PVertex* verts,
@@ -181,7 +181,7 @@ DrawRegion draw_region(const RasterState& rs, const FragCtx& frag, GLenum mode,
   for_each_draw_buffer(fb, rs, region, [&](bool primary) {
     if (primary) return rasterize(dc, workers, mode, verts, indices, count);
     FragCtx second;
-    prepare_fragments(rs, fb, second); // fb.color is the second buffer now
+    prepare_fragments(rs, fb, second); // fb.color is the further buffer now
     DrawCall other = dc;
     other.frag = &second;
     other.samples_passed = nullptr; // occlusion queries count the primary pass only
@@ -193,7 +193,7 @@ DrawRegion draw_region(const RasterState& rs, const FragCtx& frag, GLenum mode,
 [[gnu::always_inline]] inline void rasterize_all_buffers(const DrawCall& dc, RasterWorkers* workers,
                                                          GLenum mode, const PVertex* verts,
                                                          const uint32_t* indices, size_t count) {
-  if (dc.fb->color_also == nullptr) return rasterize(dc, workers, mode, verts, indices, count);
+  if (dc.fb->more_count == 0) return rasterize(dc, workers, mode, verts, indices, count);
   rasterize_both_buffers(dc, workers, mode, verts, indices, count);
 }
 

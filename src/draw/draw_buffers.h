@@ -1,6 +1,6 @@
-// Drawing into every draw buffer (GL 2.1 §4.2.1). With FRONT_AND_BACK on a double-buffered
-// drawable a draw is rasterized twice, first into the second colour buffer and then into the
-// primary one; both passes must meet every fragment with the same depth and stencil values
+// Drawing into every draw buffer (GL 2.1 §4.2.1, GL 2.0 DrawBuffers). With FRONT_AND_BACK on a
+// double-buffered drawable, or several draw buffers, a draw is rasterized once per buffer,
+// first into the further colour buffers and then into the primary one; all passes must meet every fragment with the same depth and stencil values
 // and so make the same decisions, so the depth and stencil values the first pass may change
 // are kept and put back. Only the draw's region is kept: the window rectangle its primitives
 // or pixels can reach.
@@ -26,7 +26,7 @@ struct DrawRegion {
 class DepthStencilSnapshot {
 public:
   void save(const Framebuffer& fb, const RasterState& rs, const DrawRegion& region);
-  void restore(Framebuffer& fb) const;
+  void restore(const Framebuffer& fb) const;
 
 private:
   DrawRegion region_;
@@ -34,20 +34,23 @@ private:
   std::vector<uint8_t> stencil_;
 };
 
-// Runs pass(primary) once per draw buffer: with a second colour buffer (fb.color_also), first
-// pass(false) into it, the depth and stencil values of `region` put back afterwards, then
-// pass(true) into the primary buffer (fb.color). Occlusion queries count the primary pass only.
+// Runs pass(primary) once per draw buffer: for each further colour buffer (fb.more), pass(false)
+// with fb.color pointing at it, the depth and stencil values of `region` put back afterwards,
+// then pass(true) into the primary buffer (fb.color). Occlusion queries count the primary pass
+// only.
 template <typename Pass>
 void for_each_draw_buffer(Framebuffer& fb, const RasterState& rs, const DrawRegion& region,
                           Pass&& pass) {
-  if (fb.color_also != nullptr) {
+  if (fb.more_count > 0) {
     DepthStencilSnapshot snapshot;
     snapshot.save(fb, rs, region);
-    uint8_t* const primary = fb.color;
-    fb.color = fb.color_also;
-    pass(false);
-    fb.color = primary;
-    snapshot.restore(fb);
+    const Framebuffer primary = fb;
+    for (int i = 0; i < primary.more_count; ++i) {
+      fb = primary.with_color(primary.more[i]);
+      pass(false);
+      snapshot.restore(fb);
+    }
+    fb = primary;
   }
   pass(true);
 }

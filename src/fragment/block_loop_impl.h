@@ -716,7 +716,7 @@ template <ColorFormat P> unsigned alpha_row(const FragCtx& ctx, const Row& s, un
 template <DepthPath D>
 unsigned stencil_depth_row(const FragCtx& ctx, const FragInputs& in, int bx, int y, int di, int dj,
                            unsigned m) {
-  uint8_t* const st = ctx.stencil + static_cast<ptrdiff_t>(y) * ctx.fb_width + bx;
+  uint8_t* const st = ctx.stencil + static_cast<ptrdiff_t>(y) * ctx.stencil_stride + bx;
   // Whole rows inside the buffer are loaded and stored as eight bytes; the last block of a
   // row whose width is not a multiple of 8 touches only its fragments.
   const bool whole = bx + N <= ctx.fb_width;

@@ -85,7 +85,8 @@ void prepare_fragments(const RasterState& rs, const Framebuffer& fb, FragCtx& ct
   ctx.color = fb.color;
   ctx.color_stride = fb.color_stride;
   ctx.depth = fb.depth;
-  ctx.depth_stride = fb.width;
+  ctx.depth_stride = fb.depth_stride;
+  ctx.stencil_stride = fb.stencil_stride;
   ctx.depth_max = fb.depth_bits >= 32 ? 4294967295.0 : static_cast<double>(fb.depth_max());
   ctx.depth_func = k.depth_func;
   ctx.depth_write = k.depth_write;

@@ -124,13 +124,13 @@ void clear_depth(Framebuffer& fb, const ClearState& cs, const ClearRect& r) {
   const double zmax = fb.depth_bits >= 32 ? 4294967295.0 : static_cast<double>(fb.depth_max());
   const double z = std::clamp(cs.depth, 0.0, 1.0) * zmax + 0.5;
   const uint32_t v = static_cast<uint32_t>(z);
-  if (r.x0 == 0 && r.x1 == fb.width) {
-    std::fill_n(fb.depth + static_cast<ptrdiff_t>(r.y0) * fb.width,
+  if (r.x0 == 0 && r.x1 == fb.width && fb.depth_stride == fb.width) {
+    std::fill_n(fb.depth + static_cast<ptrdiff_t>(r.y0) * fb.depth_stride,
                 static_cast<size_t>(r.w()) * r.h(), v);
     return;
   }
   for (int y = r.y0; y < r.y1; ++y)
-    std::fill_n(fb.depth + static_cast<ptrdiff_t>(y) * fb.width + r.x0, r.w(), v);
+    std::fill_n(fb.depth + static_cast<ptrdiff_t>(y) * fb.depth_stride + r.x0, r.w(), v);
 }
 
 void clear_stencil(Framebuffer& fb, const ClearState& cs, const ClearRect& r) {
@@ -140,7 +140,7 @@ void clear_stencil(Framebuffer& fb, const ClearState& cs, const ClearRect& r) {
   const uint8_t wm = static_cast<uint8_t>(cs.stencil_writemask & 0xff);
   if (wm == 0) return;
   for (int y = r.y0; y < r.y1; ++y) {
-    uint8_t* p = fb.stencil + static_cast<ptrdiff_t>(y) * fb.width + r.x0;
+    uint8_t* p = fb.stencil + static_cast<ptrdiff_t>(y) * fb.stencil_stride + r.x0;
     if (wm == 0xff) {
       std::memset(p, value, static_cast<size_t>(r.w()));
     } else {

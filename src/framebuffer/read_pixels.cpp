@@ -3,8 +3,11 @@
 // table built per call. Depth and stencil values are converted one by one.
 #include "framebuffer/read_pixels.h"
 
+#include <GL/glext.h>
+
 #include <algorithm>
 #include <bit>
+#include <cmath>
 #include <cstdint>
 #include <cstring>
 #include <initializer_list>
@@ -413,36 +416,36 @@ bool read_depth(const Framebuffer& fb, const Span& s, int x, int y, GLenum type,
   const bool sw = pack.swap_bytes;
   switch (type) {
   case GL_UNSIGNED_BYTE:
-    pack_scalar_rows<uint8_t>(fb.depth, fb.width, s, x, y, pl, sw, dst,
+    pack_scalar_rows<uint8_t>(fb.depth, fb.depth_stride, s, x, y, pl, sw, dst,
                               [&](uint32_t d) { return static_cast<uint8_t>(to_unorm(d, max, 0xffu)); });
     return true;
   case GL_BYTE:
-    pack_scalar_rows<int8_t>(fb.depth, fb.width, s, x, y, pl, sw, dst,
+    pack_scalar_rows<int8_t>(fb.depth, fb.depth_stride, s, x, y, pl, sw, dst,
                              [&](uint32_t d) { return static_cast<int8_t>(to_snorm(d, max, 0xffu)); });
     return true;
   case GL_UNSIGNED_SHORT:
-    pack_scalar_rows<uint16_t>(fb.depth, fb.width, s, x, y, pl, sw, dst, [&](uint32_t d) {
+    pack_scalar_rows<uint16_t>(fb.depth, fb.depth_stride, s, x, y, pl, sw, dst, [&](uint32_t d) {
       return static_cast<uint16_t>(to_unorm(d, max, 0xffffu));
     });
     return true;
   case GL_SHORT:
-    pack_scalar_rows<int16_t>(fb.depth, fb.width, s, x, y, pl, sw, dst, [&](uint32_t d) {
+    pack_scalar_rows<int16_t>(fb.depth, fb.depth_stride, s, x, y, pl, sw, dst, [&](uint32_t d) {
       return static_cast<int16_t>(to_snorm(d, max, 0xffffu));
     });
     return true;
   case GL_UNSIGNED_INT:
-    pack_scalar_rows<uint32_t>(fb.depth, fb.width, s, x, y, pl, sw, dst,
+    pack_scalar_rows<uint32_t>(fb.depth, fb.depth_stride, s, x, y, pl, sw, dst,
                                [&](uint32_t d) { return replicate_to_32(d, bits); });
     return true;
   case GL_INT:
-    pack_scalar_rows<int32_t>(fb.depth, fb.width, s, x, y, pl, sw, dst, [&](uint32_t d) {
+    pack_scalar_rows<int32_t>(fb.depth, fb.depth_stride, s, x, y, pl, sw, dst, [&](uint32_t d) {
       return static_cast<int32_t>(to_snorm(d, max, 0xffffffffu));
     });
     return true;
   case GL_FLOAT: {
     // z = d / (2^m - 1): the double quotient is within half a double ulp, so rounding it to
     // float gives the float nearest the exact value.
-    pack_scalar_rows<float>(fb.depth, fb.width, s, x, y, pl, sw, dst, [&](uint32_t d) {
+    pack_scalar_rows<float>(fb.depth, fb.depth_stride, s, x, y, pl, sw, dst, [&](uint32_t d) {
       return static_cast<float>(static_cast<double>(d) / max);
     });
     return true;
@@ -458,31 +461,31 @@ bool read_stencil(const Framebuffer& fb, const Span& s, int x, int y, GLenum typ
   const bool sw = pack.swap_bytes;
   switch (type) {
   case GL_UNSIGNED_BYTE:
-    pack_scalar_rows<uint8_t>(fb.stencil, fb.width, s, x, y, pl, sw, dst, [](uint8_t v) { return v; });
+    pack_scalar_rows<uint8_t>(fb.stencil, fb.stencil_stride, s, x, y, pl, sw, dst, [](uint8_t v) { return v; });
     return true;
   case GL_BYTE:
-    pack_scalar_rows<uint8_t>(fb.stencil, fb.width, s, x, y, pl, sw, dst,
+    pack_scalar_rows<uint8_t>(fb.stencil, fb.stencil_stride, s, x, y, pl, sw, dst,
                               [](uint8_t v) { return static_cast<uint8_t>(v & 0x7f); });
     return true;
   // The wider masks of Table 4.6 keep all 8 stencil bits.
   case GL_UNSIGNED_SHORT:
   case GL_SHORT:
-    pack_scalar_rows<uint16_t>(fb.stencil, fb.width, s, x, y, pl, sw, dst,
+    pack_scalar_rows<uint16_t>(fb.stencil, fb.stencil_stride, s, x, y, pl, sw, dst,
                                [](uint8_t v) { return static_cast<uint16_t>(v); });
     return true;
   case GL_UNSIGNED_INT:
   case GL_INT:
-    pack_scalar_rows<uint32_t>(fb.stencil, fb.width, s, x, y, pl, sw, dst,
+    pack_scalar_rows<uint32_t>(fb.stencil, fb.stencil_stride, s, x, y, pl, sw, dst,
                                [](uint8_t v) { return static_cast<uint32_t>(v); });
     return true;
   case GL_FLOAT:
-    pack_scalar_rows<float>(fb.stencil, fb.width, s, x, y, pl, sw, dst,
+    pack_scalar_rows<float>(fb.stencil, fb.stencil_stride, s, x, y, pl, sw, dst,
                             [](uint8_t v) { return static_cast<float>(v); });
     return true;
   case GL_BITMAP: {
     // §3.6.4 BITMAP placement: bit order per PACK_LSB_FIRST; the index is masked to 1 bit.
     for (int wy = s.y0; wy < s.y1; ++wy) {
-      const uint8_t* src = fb.stencil + static_cast<ptrdiff_t>(wy) * fb.width;
+      const uint8_t* src = fb.stencil + static_cast<ptrdiff_t>(wy) * fb.stencil_stride;
       uint8_t* row = dst + pl.origin + static_cast<size_t>(wy - y) * pl.row_stride;
       for (int wx = s.x0; wx < s.x1; ++wx) {
         const size_t bit = pl.origin_bit + static_cast<size_t>(wx - x);
@@ -497,11 +500,33 @@ bool read_stencil(const Framebuffer& fb, const Span& s, int x, int y, GLenum typ
   }
 }
 
+// EXT_packed_depth_stencil: one UNSIGNED_INT_24_8 per pixel, depth in the high 24 bits (the
+// depth value converted to 24 bits as Table 4.7 converts it to an unsigned integer) and the
+// stencil index in the low 8.
+bool read_depth_stencil(const Framebuffer& fb, const Span& s, int x, int y, const PixelStore& pack,
+                        const Placement& pl, uint8_t* dst) {
+  if (fb.depth == nullptr || fb.stencil == nullptr || fb.depth_bits <= 0) return false;
+  const double max = fb.depth_bits >= 32 ? 4294967295.0 : double(fb.depth_max());
+  const bool sw = pack.swap_bytes;
+  for (int wy = s.y0; wy < s.y1; ++wy) {
+    const uint32_t* z = fb.depth + ptrdiff_t(wy) * fb.depth_stride;
+    const uint8_t* st = fb.stencil + ptrdiff_t(wy) * fb.stencil_stride;
+    uint8_t* out = dst + pl.origin + size_t(wy - y) * pl.row_stride + size_t(s.x0 - x) * 4;
+    for (int wx = s.x0; wx < s.x1; ++wx, out += 4) {
+      const uint32_t d24 = fb.depth_bits == 24
+                               ? z[wx]
+                               : uint32_t(std::nearbyint(double(z[wx]) / max * 16777215.0));
+      put<uint32_t>(out, (d24 << 8) | st[wx], sw);
+    }
+  }
+  return true;
+}
+
 } // namespace
 
 bool is_valid_read_format(GLenum format) {
   return is_color_format(format) || format == GL_COLOR_INDEX || format == GL_DEPTH_COMPONENT ||
-         format == GL_STENCIL_INDEX;
+         format == GL_STENCIL_INDEX || format == GL_DEPTH_STENCIL;
 }
 
 bool is_packed_pixel_type(GLenum type) {
@@ -518,7 +543,8 @@ bool is_valid_type(GLenum type) {
   case GL_UNSIGNED_INT:
   case GL_INT:
   case GL_FLOAT:
-  case GL_BITMAP: return true;
+  case GL_BITMAP:
+  case GL_UNSIGNED_INT_24_8: return true;
   default: return is_packed_pixel_type(type);
   }
 }
@@ -527,7 +553,8 @@ int pixel_format_components(GLenum format) {
   switch (format) {
   case GL_COLOR_INDEX:
   case GL_STENCIL_INDEX:
-  case GL_DEPTH_COMPONENT: return 1;
+  case GL_DEPTH_COMPONENT:
+  case GL_DEPTH_STENCIL: return 1;
   default: {
     uint8_t slots[4];
     return format_slots(format, slots);
@@ -543,7 +570,8 @@ int pixel_type_size(GLenum type) {
   case GL_SHORT: return 2;
   case GL_UNSIGNED_INT:
   case GL_INT:
-  case GL_FLOAT: return 4;
+  case GL_FLOAT:
+  case GL_UNSIGNED_INT_24_8: return 4;
   default: {
     PackedLayout layout;
     return packed_layout(type, layout) ? layout.bytes : 0;
@@ -562,7 +590,12 @@ GLenum read_format_type_error(GLenum format, GLenum type) {
                                            : (format == GL_RGBA || format == GL_BGRA);
     if (!ok) return GL_INVALID_OPERATION;
   }
+  // EXT_packed_depth_stencil: UNSIGNED_INT_24_8 goes with DEPTH_STENCIL only
+  // (INVALID_OPERATION, as packed types with another format), and DEPTH_STENCIL takes no
+  // other type (INVALID_ENUM).
+  if (type == GL_UNSIGNED_INT_24_8 && format != GL_DEPTH_STENCIL) return GL_INVALID_OPERATION;
   if (!is_valid_read_format(format)) return GL_INVALID_ENUM;
+  if (format == GL_DEPTH_STENCIL && type != GL_UNSIGNED_INT_24_8) return GL_INVALID_ENUM;
   // §3.6.4: BITMAP with a format other than COLOR_INDEX or STENCIL_INDEX.
   if (type == GL_BITMAP && format != GL_COLOR_INDEX && format != GL_STENCIL_INDEX)
     return GL_INVALID_ENUM;
@@ -576,7 +609,9 @@ bool read_pixels(const Framebuffer& fb, int x, int y, int w, int h, GLenum forma
   if (read_format_type_error(format, type) != GL_NO_ERROR) return false;
   Placement pl;
   if (!placement(w, format, type, pack, pl)) return false;
-  const bool depth = format == GL_DEPTH_COMPONENT, stencil = format == GL_STENCIL_INDEX;
+  const bool both = format == GL_DEPTH_STENCIL;
+  const bool depth = format == GL_DEPTH_COMPONENT || both;
+  const bool stencil = format == GL_STENCIL_INDEX || both;
   if ((depth && fb.depth == nullptr) || (stencil && fb.stencil == nullptr) ||
       (!depth && !stencil && fb.color == nullptr))
     return false;
@@ -584,6 +619,7 @@ bool read_pixels(const Framebuffer& fb, int x, int y, int w, int h, GLenum forma
   const Span s = clip_to(fb, x, y, w, h);
   if (s.empty()) return true;
   uint8_t* out = static_cast<uint8_t*>(dst);
+  if (both) return read_depth_stencil(fb, s, x, y, pack, pl, out);
   if (depth) return read_depth(fb, s, x, y, type, pack, pl, out);
   if (stencil) return read_stencil(fb, s, x, y, type, pack, pl, out);
   return read_color(fb, s, x, y, format, type, pack, pl, out);

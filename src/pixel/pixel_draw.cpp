@@ -272,7 +272,7 @@ void draw_stencil_rect(const RasterState& rs, const Framebuffer& fb, const Pixel
       const int x1 = std::min(col_hi[static_cast<size_t>(n)], cx1);
       const uint8_t v = static_cast<uint8_t>(index[g] & 0xffu);
       for (int y = y0; y < y1; ++y) {
-        uint8_t* s = fb.stencil + static_cast<ptrdiff_t>(y) * fb.width;
+        uint8_t* s = fb.stencil + static_cast<ptrdiff_t>(y) * fb.stencil_stride;
         for (int x = x0; x < x1; ++x)
           s[x] = static_cast<uint8_t>((s[x] & ~wm) | (v & wm));
       }

@@ -3,6 +3,8 @@
 // layout, type and format decisions are made once per call.
 #include "pixel/unpack.h"
 
+#include <GL/glext.h>
+
 #include <algorithm>
 #include <bit>
 #include <cmath>
@@ -262,7 +264,11 @@ GLenum check_pixel_format_type(GLenum format, GLenum type) {
         pl.components == 3 ? format == GL_RGB : (format == GL_RGBA || format == GL_BGRA);
     if (!ok) return GL_INVALID_OPERATION;
   }
+  // EXT_packed_depth_stencil: UNSIGNED_INT_24_8 with DEPTH_STENCIL only, and no other type
+  // with DEPTH_STENCIL.
+  if (type == GL_UNSIGNED_INT_24_8 && format != GL_DEPTH_STENCIL) return GL_INVALID_OPERATION;
   if (!is_valid_read_format(format)) return GL_INVALID_ENUM;
+  if (format == GL_DEPTH_STENCIL && type != GL_UNSIGNED_INT_24_8) return GL_INVALID_ENUM;
   if (type == GL_BITMAP && !is_index_format(format)) return GL_INVALID_ENUM;
   return GL_NO_ERROR;
 }
@@ -341,6 +347,41 @@ void unpack_depth(const void* pixels, int w, int h, int d, GLenum type, const Pi
       out[group + static_cast<size_t>(i)] =
           element_to_float(base + row + static_cast<size_t>(i) * s, type, st.swap_bytes);
     transfer_depth(xfer, out + group, static_cast<size_t>(w));
+  });
+}
+
+void unpack_depth_stencil(const void* pixels, int w, int h, int d, const PixelStore& st,
+                          const PixelTransferView& xfer, float* depth, uint32_t* stencil) {
+  ClientLayout l;
+  if (w <= 0 || h <= 0 || d <= 0 ||
+      !client_layout(w, h, GL_DEPTH_STENCIL, GL_UNSIGNED_INT_24_8, st, l))
+    return;
+  const uint8_t* base = static_cast<const uint8_t*>(pixels);
+  for_each_row(l, w, h, d, [&](size_t row, size_t group) {
+    for (int i = 0; i < w; ++i) {
+      const uint32_t v = load32(base + row + static_cast<size_t>(i) * 4, st.swap_bytes);
+      depth[group + static_cast<size_t>(i)] = static_cast<float>(double(v >> 8) / 16777215.0);
+      stencil[group + static_cast<size_t>(i)] = v & 0xffu;
+    }
+    transfer_depth(xfer, depth + group, static_cast<size_t>(w));
+    transfer_stencil(xfer, stencil + group, static_cast<size_t>(w));
+  });
+}
+
+void pack_depth_stencil(const float* depth, const uint32_t* stencil, int w, int h, int d,
+                        const PixelStore& st, void* pixels) {
+  ClientLayout l;
+  if (w <= 0 || h <= 0 || d <= 0 ||
+      !client_layout(w, h, GL_DEPTH_STENCIL, GL_UNSIGNED_INT_24_8, st, l))
+    return;
+  uint8_t* base = static_cast<uint8_t*>(pixels);
+  for_each_row(l, w, h, d, [&](size_t row, size_t group) {
+    for (int i = 0; i < w; ++i) {
+      const size_t g = group + static_cast<size_t>(i);
+      const uint32_t z = uint32_t(std::nearbyint(double(clamp01(depth[g])) * 16777215.0));
+      store32(base + row + static_cast<size_t>(i) * 4, (z << 8) | (stencil[g] & 0xffu),
+              st.swap_bytes);
+    }
   });
 }
 

@@ -68,6 +68,15 @@ void unpack_rgba(const void* pixels, int w, int h, int d, GLenum format, GLenum 
 void unpack_depth(const void* pixels, int w, int h, int d, GLenum type, const PixelStore& st,
                   const PixelTransferView& xfer, float* out);
 
+// EXT_packed_depth_stencil: DEPTH_STENCIL / UNSIGNED_INT_24_8 groups to depth floats (with
+// depth scale and bias) and stencil indices (with the stencil index arithmetic and map).
+void unpack_depth_stencil(const void* pixels, int w, int h, int d, const PixelStore& st,
+                          const PixelTransferView& xfer, float* depth, uint32_t* stencil);
+
+// Depth floats (clamped) and stencil indices to DEPTH_STENCIL / UNSIGNED_INT_24_8 groups.
+void pack_depth_stencil(const float* depth, const uint32_t* stencil, int w, int h, int d,
+                        const PixelStore& st, void* pixels);
+
 // COLOR_INDEX or STENCIL_INDEX groups to integer indices (floats truncated), with §3.6.5
 // "Arithmetic on Indices" applied; for STENCIL_INDEX also the S_TO_S lookup when MAP_STENCIL.
 void unpack_index(const void* pixels, int w, int h, int d, GLenum format, GLenum type,

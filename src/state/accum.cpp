@@ -86,22 +86,24 @@ void GLAPIENTRY Accum(GLenum op, GLfloat value) {
   // GL 2.1 §4.2.4: INVALID_OPERATION without an accumulation buffer.
   if (ctx->fb.accum == nullptr) return record_error(ctx, GL_INVALID_OPERATION, "glAccum");
   // §5.2, §5.3: no framebuffer updates in SELECT and FEEDBACK mode.
+  if (!draw_framebuffer_ready(ctx, "glAccum") || !read_framebuffer_ready(ctx, "glAccum")) return;
   if (!render_mode_is_render(ctx) || ctx->fb.color == nullptr) return;
   // RETURN writes the colour buffers selected for drawing through the colour mask
   // (§4.2.4); with the draw buffer NONE there are none.
   bool write[4];
   for (int k = 0; k < 4; ++k)
-    write[k] = ctx->color_buffer.color_mask[k] && ctx->color_buffer.draw_buffer != GL_NONE;
+    write[k] = ctx->color_buffer.color_mask[k];
   // §4.2.4: LOAD and ACCUM read the read buffer; RETURN writes every draw buffer.
   if (op != GL_RETURN) {
-    Framebuffer source = read_view(ctx->fb);
+    if (ctx->read_fb.color == nullptr) return;
+    Framebuffer source = ctx->read_fb;
+    source.accum = ctx->fb.accum;
     return accum_apply(source, op, value, accum_rect(ctx), write);
   }
   accum_apply(ctx->fb, op, value, accum_rect(ctx), write);
-  if (ctx->fb.color_also != nullptr) {
-    Framebuffer second = ctx->fb;
-    second.color = second.color_also;
-    accum_apply(second, op, value, accum_rect(ctx), write);
+  for (int i = 0; i < ctx->fb.more_count; ++i) {
+    Framebuffer other = ctx->fb.with_color(ctx->fb.more[i]);
+    accum_apply(other, op, value, accum_rect(ctx), write);
   }
 }
 

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include <GL/glext.h>
+
 #include "state/api_util.h"
 #include "dispatch.h"
 #include "framebuffer/read_pixels.h"
@@ -94,14 +96,16 @@ void GLAPIENTRY Clear(GLbitfield mask) {
     record_error(ctx, GL_INVALID_VALUE, "glClear");
     return;
   }
+  // ARB_framebuffer_object §4.4.4: an incomplete draw framebuffer is not written.
+  if (!draw_framebuffer_ready(ctx, "glClear")) return;
   // GL 2.1 §5.2, §5.3: no framebuffer updates in SELECT and FEEDBACK mode.
-  if (ctx->fb.color == nullptr || !render_mode_is_render(ctx)) return;
+  if (!ctx->fb.present() || !render_mode_is_render(ctx)) return;
   if (mask & GL_ACCUM_BUFFER_BIT) accum_clear(ctx); // src/state/accum.cpp
   ClearState cs;
   for (int i = 0; i < 4; ++i) {
     cs.color[i] = ctx->color_buffer.clear_color[i];
     // GL 2.1 §4.2.3: the colour buffers cleared are those enabled for writing (§4.2.1).
-    cs.color_write[i] = ctx->color_buffer.color_mask[i] && ctx->color_buffer.draw_buffer != GL_NONE;
+    cs.color_write[i] = ctx->color_buffer.color_mask[i];
   }
   cs.depth = ctx->depth.clear;
   cs.depth_write = ctx->depth.mask;
@@ -111,16 +115,16 @@ void GLAPIENTRY Clear(GLbitfield mask) {
   for (int i = 0; i < 4; ++i)
     cs.scissor[i] = ctx->scissor.box[i];
   // GL 2.1 §4.2.3: clearing a buffer that does not exist has no effect.
-  GLbitfield m = mask & GL_COLOR_BUFFER_BIT;
+  GLbitfield m = ctx->fb.color != nullptr ? mask & GL_COLOR_BUFFER_BIT : 0u;
   if (ctx->fb.depth != nullptr) m |= mask & GL_DEPTH_BUFFER_BIT;
   if (ctx->fb.stencil != nullptr) m |= mask & GL_STENCIL_BUFFER_BIT;
   if (m != 0) clear_buffers_shared(&ctx->workers, ctx->fb, cs, m);
-  // GL 2.1 §4.2.3: with FRONT_AND_BACK both colour buffers are cleared.
-  if ((m & GL_COLOR_BUFFER_BIT) && ctx->fb.color_also != nullptr) {
-    Framebuffer second = ctx->fb;
-    second.color = second.color_also;
-    clear_buffers_shared(&ctx->workers, second, cs, GL_COLOR_BUFFER_BIT);
-  }
+  // GL 2.1 §4.2.3: every colour buffer drawing writes is cleared (FRONT_AND_BACK, DrawBuffers).
+  if ((m & GL_COLOR_BUFFER_BIT) != 0)
+    for (int i = 0; i < ctx->fb.more_count; ++i) {
+      Framebuffer other = ctx->fb.with_color(ctx->fb.more[i]);
+      clear_buffers_shared(&ctx->workers, other, cs, GL_COLOR_BUFFER_BIT);
+    }
 }
 
 void GLAPIENTRY ClearColor(GLclampf r, GLclampf g, GLclampf b, GLclampf a) {
@@ -162,18 +166,29 @@ void GLAPIENTRY ReadPixels(GLint x, GLint y, GLsizei w, GLsizei h, GLenum format
   // GL 2.1 §4.3.2: COLOR_INDEX in RGBA mode, and depth/stencil reads with no such buffer,
   // are INVALID_OPERATION.
   if (format == GL_COLOR_INDEX) return record_error(ctx, GL_INVALID_OPERATION, "glReadPixels");
-  if (format == GL_DEPTH_COMPONENT && ctx->fb.depth == nullptr)
+  // ARB_framebuffer_object §4.4.4: an incomplete read framebuffer is not read.
+  if (!read_framebuffer_ready(ctx, "glReadPixels")) return;
+  const Framebuffer& fb = ctx->read_fb;
+  if (format == GL_DEPTH_COMPONENT && fb.depth == nullptr)
     return record_error(ctx, GL_INVALID_OPERATION, "glReadPixels");
-  if (format == GL_STENCIL_INDEX && ctx->fb.stencil == nullptr)
+  if (format == GL_STENCIL_INDEX && fb.stencil == nullptr)
+    return record_error(ctx, GL_INVALID_OPERATION, "glReadPixels");
+  // EXT_packed_depth_stencil: DEPTH_STENCIL needs both buffers.
+  if (format == GL_DEPTH_STENCIL && (fb.depth == nullptr || fb.stencil == nullptr))
+    return record_error(ctx, GL_INVALID_OPERATION, "glReadPixels");
+  const bool color =
+      format != GL_DEPTH_COMPONENT && format != GL_STENCIL_INDEX && format != GL_DEPTH_STENCIL;
+  // GL 3.0 §4.3.2: reading colour with the read buffer NONE is INVALID_OPERATION.
+  if (color && fb.color == nullptr && fb.present())
     return record_error(ctx, GL_INVALID_OPERATION, "glReadPixels");
   // GL 2.1 §4.3.2: into the pixel pack buffer when one is bound.
   const PixelStore& st = ctx->pixel_store.pack;
   if (!pack_memory(ctx, pixels, client_image_bytes(w, h, 1, format, type, store_2d(st)),
                    pixel_type_unit(type), "glReadPixels", &pixels))
     return;
-  if (pixels == nullptr || w == 0 || h == 0 || ctx->fb.color == nullptr) return;
+  if (pixels == nullptr || w == 0 || h == 0 || !fb.present()) return;
   if (read_pixels_transfer(ctx, x, y, w, h, format, type, pixels)) return;
-  read_pixels(read_view(ctx->fb), x, y, w, h, format, type, ctx->pixel_store.pack, pixels);
+  read_pixels(fb, x, y, w, h, format, type, ctx->pixel_store.pack, pixels);
 }
 
 } // namespace exec

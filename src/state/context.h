@@ -25,6 +25,7 @@
 #include "state/eval.h"
 #include "state/fog.h"
 #include "state/fragment_state.h"
+#include "state/framebuffer_object.h"
 #include "state/hints.h"
 #include "state/lighting.h"
 #include "state/multisample.h"
@@ -63,9 +64,14 @@ enum DirtyBit : uint32_t {
 struct SharedObjects {
   std::unordered_map<GLuint, std::unique_ptr<BufferObject>> buffers;
   // Texture objects (GL 2.1 §3.8.12) by name; name 0 is each context's default object.
-  std::unordered_map<GLuint, std::unique_ptr<TextureObject>> textures;
-  // Bumped on every change of any texture image or parameter (also of default objects), so
-  // views made by make_sampler_view (state/texture_object.h) know when to be remade.
+  // Shared pointers: a framebuffer attachment keeps its texture alive after the name is
+  // deleted (ARB_framebuffer_object §4.4.2.3).
+  std::unordered_map<GLuint, std::shared_ptr<TextureObject>> textures;
+  // Renderbuffers (ARB_framebuffer_object §4.4.2.1) by name.
+  std::unordered_map<GLuint, std::shared_ptr<Renderbuffer>> renderbuffers;
+  // Bumped on every change of any texture image or parameter (also of default objects) or
+  // renderbuffer storage, so views made by make_sampler_view (state/texture_object.h) and the
+  // framebuffers derived from attached images (framebuffer_object.h) know when to be remade.
   uint64_t texture_generation = 0;
   DisplayLists lists; // src/state/dlist.cpp
 };
@@ -86,16 +92,20 @@ struct Context {
   Context(const Context&) = delete;
   Context& operator=(const Context&) = delete;
 
-  // ---- window system (set by osmesa.cpp / glx) ----
-  Framebuffer fb;
+  // ---- window system (set by osmesa.cpp / glx through winsys/common/surface_binding.h) ----
+  Framebuffer window; // the drawable's buffers
+  // ---- the framebuffers the commands use (framebuffer_object.h: sync_framebuffers) ----
+  Framebuffer fb;      // drawing: the window's draw buffers or a framebuffer object's images
+  Framebuffer read_fb; // reading: its colour is the read buffer
+  FramebufferState fbo; // framebuffer and renderbuffer objects, bindings
   bool ever_current = false;
-  // The colour buffers the context has (GL 2.1 table 4.4), kColorBuffer* bits. Pineda draws
-  // into fb.color, which is the front left buffer unless a window-system layer says otherwise.
+  // The colour buffers the window has (GL 2.1 table 4.4), kColorBuffer* bits: window.color is
+  // the front left buffer unless a window-system layer says otherwise.
   uint32_t color_buffers = kColorBufferFrontLeft;
   // Called by glFlush and glFinish when set (GLX: a single-buffered window or a pixmap shows
   // what was rendered once the commands are flushed, GL 2.1 §5.5).
   void (*present_front)(Context*) = nullptr;
-  // Called when DrawBuffer/ReadBuffer select fb.front_color of a double-buffered drawable,
+  // Called when DrawBuffer/ReadBuffer select window.front_color of a double-buffered drawable,
   // before it is used (GLX: the front buffer's contents may still have to be fetched).
   void (*front_selected)(Context*) = nullptr;
 

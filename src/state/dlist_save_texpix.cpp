@@ -140,6 +140,10 @@ bool save_pixel_map(GLenum map, GLsizei mapsize, const T* values, const char* fu
                           static_cast<size_t>(copied) * sizeof(T));
 }
 
+void GLAPIENTRY draw_buffers_call(GLenum, GLsizei n, const GLenum* bufs) {
+  exec::DrawBuffers(n, bufs);
+}
+
 struct alignas(16) PrioritizeHeader {
   GLsizei n;
   GLsizei copied;
@@ -307,6 +311,17 @@ void GLAPIENTRY PixelMapuiv(GLenum map, GLsizei mapsize, const GLuint* values) {
 void GLAPIENTRY PixelMapusv(GLenum map, GLsizei mapsize, const GLushort* values) {
   if (save_pixel_map<GLushort, &exec::PixelMapusv>(map, mapsize, values, "glPixelMapusv"))
     exec::PixelMapusv(map, mapsize, values);
+}
+
+// GL 2.0 §5.4: DrawBuffers is compiled with its array (at most MAX_DRAW_BUFFERS values; a
+// larger n is INVALID_VALUE when the list executes and its array is not read).
+void GLAPIENTRY DrawBuffers(GLsizei n, const GLenum* bufs) {
+  const GLsizei copied = bufs == nullptr || n > kMaxDrawBuffers ? 0 : std::max<GLsizei>(n, 0);
+  const PixelMapHeader h{GL_NONE, n, copied};
+  if (compiling_list() == nullptr ||
+      record_with_data(&replay_pixel_map<GLenum, &draw_buffers_call>, &h, sizeof h, bufs,
+                       static_cast<size_t>(copied) * sizeof(GLenum)))
+    exec::DrawBuffers(n, bufs);
 }
 
 void GLAPIENTRY PrioritizeTextures(GLsizei n, const GLuint* textures, const GLfloat* priorities) {

@@ -18,7 +18,8 @@ uint32_t input_tex_units(Context* ctx) {
 
 void draw_vertices(Context* ctx, GLenum mode, const InputVertex* verts, size_t n,
                    const uint32_t* indices, size_t count) {
-  if (ctx->fb.color == nullptr || n == 0) return;
+  // ARB_framebuffer_object §4.4.4: nothing is drawn into an incomplete framebuffer.
+  if (!draw_framebuffer_ready(ctx, "glDraw") || !ctx->fb.present() || n == 0) return;
   validate_state(ctx);
   DrawInput in;
   in.mode = mode;

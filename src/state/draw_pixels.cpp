@@ -1,5 +1,7 @@
 // glDrawPixels (GL 2.1 §3.6.4, §4.3.1), glBitmap (§3.7), glCopyPixels (§4.3.3), and glReadPixels
 // when pixel transfer operations are active (§4.3.2; buffers.cpp keeps the direct path).
+#include <GL/glext.h>
+
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
@@ -140,11 +142,13 @@ bool read_pixels_transfer(Context* ctx, int x, int y, int w, int h, GLenum forma
                           void* pixels) {
   const PixelTransferView xfer = pixel_transfer_view(ctx);
   const bool depth = format == GL_DEPTH_COMPONENT, stencil = format == GL_STENCIL_INDEX;
-  if (depth     ? !depth_transfer_active(xfer)
+  const bool both = format == GL_DEPTH_STENCIL;
+  if (both ? !depth_transfer_active(xfer) && !stencil_transfer_active(xfer)
+      : depth     ? !depth_transfer_active(xfer)
       : stencil ? !stencil_transfer_active(xfer)
                 : !rgba_transfer_active(xfer))
     return false;
-  const Inside in = inside_fb(ctx->fb, x, y, w, h);
+  const Inside in = inside_fb(ctx->read_fb, x, y, w, h);
   if (in.empty()) return true;
   const int iw = in.x1 - in.x0, ih = in.y1 - in.y0;
   // Pack only the groups inside the framebuffer: same rows as the full image, skipping the
@@ -159,19 +163,29 @@ bool read_pixels_transfer(Context* ctx, int x, int y, int w, int h, GLenum forma
   st.skip_rows = static_cast<int>(skip_rows);
   const size_t n = static_cast<size_t>(iw) * static_cast<size_t>(ih);
   const PixelStore tight = tight_store();
-  if (depth) {
+  if (both) {
     std::vector<float> z(n);
-    read_pixels(ctx->fb, in.x0, in.y0, iw, ih, GL_DEPTH_COMPONENT, GL_FLOAT, tight, z.data());
+    std::vector<uint32_t> s(n);
+    read_pixels(ctx->read_fb, in.x0, in.y0, iw, ih, GL_DEPTH_COMPONENT, GL_FLOAT, tight, z.data());
+    read_pixels(ctx->read_fb, in.x0, in.y0, iw, ih, GL_STENCIL_INDEX, GL_UNSIGNED_INT, tight,
+                s.data());
+    transfer_depth(xfer, z.data(), n);
+    transfer_stencil(xfer, s.data(), n);
+    pack_depth_stencil(z.data(), s.data(), iw, ih, 1, st, pixels);
+  } else if (depth) {
+    std::vector<float> z(n);
+    read_pixels(ctx->read_fb, in.x0, in.y0, iw, ih, GL_DEPTH_COMPONENT, GL_FLOAT, tight, z.data());
     transfer_depth(xfer, z.data(), n);
     pack_depth(z.data(), iw, ih, 1, type, st, pixels);
   } else if (stencil) {
     std::vector<uint32_t> s(n);
-    read_pixels(ctx->fb, in.x0, in.y0, iw, ih, GL_STENCIL_INDEX, GL_UNSIGNED_INT, tight, s.data());
+    read_pixels(ctx->read_fb, in.x0, in.y0, iw, ih, GL_STENCIL_INDEX, GL_UNSIGNED_INT, tight,
+                s.data());
     transfer_stencil(xfer, s.data(), n);
     pack_index(s.data(), iw, ih, 1, type, st, pixels);
   } else {
     std::vector<float> c(n * 4);
-    read_pixels(read_view(ctx->fb), in.x0, in.y0, iw, ih, GL_RGBA, GL_FLOAT, tight, c.data());
+    read_pixels(ctx->read_fb, in.x0, in.y0, iw, ih, GL_RGBA, GL_FLOAT, tight, c.data());
     transfer_rgba(xfer, c.data(), n);
     pack_rgba(c.data(), iw, ih, 1, format, type, st, pixels);
   }
@@ -186,9 +200,12 @@ void GLAPIENTRY DrawPixels(GLsizei width, GLsizei height, GLenum format, GLenum 
   if (width < 0 || height < 0) return record_error(ctx, GL_INVALID_VALUE, "glDrawPixels");
   const GLenum err = check_pixel_format_type(format, type);
   if (err != GL_NO_ERROR) return record_error(ctx, err, "glDrawPixels", format);
+  // ARB_framebuffer_object §4.4.4: nothing is drawn into an incomplete framebuffer.
+  if (!draw_framebuffer_ready(ctx, "glDrawPixels")) return;
   // §4.3.1 (and Mesa for depth): drawing into a buffer that does not exist.
   if ((format == GL_STENCIL_INDEX && ctx->fb.stencil == nullptr) ||
-      (format == GL_DEPTH_COMPONENT && ctx->fb.depth == nullptr))
+      (format == GL_DEPTH_COMPONENT && ctx->fb.depth == nullptr) ||
+      (format == GL_DEPTH_STENCIL && (ctx->fb.depth == nullptr || ctx->fb.stencil == nullptr)))
     return record_error(ctx, GL_INVALID_OPERATION, "glDrawPixels");
   // §5.3: in feedback mode a valid raster position writes a DRAW_PIXEL_TOKEN; in selection and
   // feedback mode no fragments are made (§5.2).
@@ -200,7 +217,7 @@ void GLAPIENTRY DrawPixels(GLsizei width, GLsizei height, GLenum format, GLenum 
   if (!unpack_memory(ctx, pixels, client_image_bytes(width, height, 1, format, type, st),
                      pixel_type_unit(type), "glDrawPixels", &pixels))
     return;
-  if (pixels == nullptr || ctx->fb.color == nullptr) return;
+  if (pixels == nullptr || !ctx->fb.present()) return;
   validate_state(ctx);
   const PixelTransferView xfer = pixel_transfer_view(ctx);
   const PixelPlacement p = placement_at(ctx, width, height);
@@ -211,7 +228,21 @@ void GLAPIENTRY DrawPixels(GLsizei width, GLsizei height, GLenum format, GLenum 
     s.skip_rows = static_cast<int>(std::min<int64_t>(INT32_MAX, int64_t{s.skip_rows} + m));
     return s;
   };
-  if (format == GL_STENCIL_INDEX) {
+  if (format == GL_DEPTH_STENCIL) {
+    // EXT_packed_depth_stencil: the depths as DEPTH_COMPONENT fragments, the stencil indices
+    // as STENCIL_INDEX writes, strip by strip.
+    std::vector<uint32_t> s;
+    in_strips<float>(
+        p, 1,
+        [&](int m, int rows, float* out) {
+          s.resize(size_t(rows) * size_t(width));
+          unpack_depth_stencil(pixels, width, rows, 1, strip_store(m), xfer, out, s.data());
+        },
+        [&](const PixelPlacement& q, const float* z) {
+          draw_depth_strip(ctx, q, z);
+          draw_stencil_rect(ctx->raster, ctx->fb, q, s.data(), nullptr);
+        });
+  } else if (format == GL_STENCIL_INDEX) {
     in_strips<uint32_t>(
         p, 1,
         [&](int m, int rows, uint32_t* out) {
@@ -244,6 +275,8 @@ void GLAPIENTRY Bitmap(GLsizei width, GLsizei height, GLfloat xorig, GLfloat yor
   RasterPos& rp = ctx->current.raster_pos;
   // §3.7: with an invalid raster position the bitmap is ignored, the position not moved.
   if (!rp.valid) return;
+  // ARB_framebuffer_object §4.4.4: nothing is drawn into an incomplete framebuffer.
+  if (!draw_framebuffer_ready(ctx, "glBitmap")) return;
   // §3.7: from the pixel unpack buffer when one is bound (an error moves nothing).
   if (render_mode_is_render(ctx) && width > 0 && height > 0) {
     const void* src = nullptr;
@@ -256,7 +289,7 @@ void GLAPIENTRY Bitmap(GLsizei width, GLsizei height, GLfloat xorig, GLfloat yor
   }
   if (!render_mode_is_render(ctx)) {
     raster_token(ctx, GL_BITMAP_TOKEN); // §5.3; the raster position still moves
-  } else if (bitmap != nullptr && width > 0 && height > 0 && ctx->fb.color != nullptr) {
+  } else if (bitmap != nullptr && width > 0 && height > 0 && ctx->fb.present()) {
     validate_state(ctx);
     // Unpacked like DrawPixels of COLOR_INDEX / BITMAP, before any conversion (§3.7).
     const size_t n = static_cast<size_t>(width) * static_cast<size_t>(height);
@@ -303,17 +336,25 @@ void GLAPIENTRY Bitmap(GLsizei width, GLsizei height, GLfloat xorig, GLfloat yor
 
 void GLAPIENTRY CopyPixels(GLint x, GLint y, GLsizei width, GLsizei height, GLenum type) {
   PINEDA_CTX_OUTSIDE("glCopyPixels");
-  if (type != GL_COLOR && type != GL_DEPTH && type != GL_STENCIL)
+  if (type != GL_COLOR && type != GL_DEPTH && type != GL_STENCIL && type != GL_DEPTH_STENCIL)
     return record_error(ctx, GL_INVALID_ENUM, "glCopyPixels", type);
   if (width < 0 || height < 0) return record_error(ctx, GL_INVALID_VALUE, "glCopyPixels");
-  if ((type == GL_DEPTH && ctx->fb.depth == nullptr) ||
-      (type == GL_STENCIL && ctx->fb.stencil == nullptr))
+  // ARB_framebuffer_object §4.4.4: incomplete framebuffers are neither read nor written.
+  if (!draw_framebuffer_ready(ctx, "glCopyPixels") || !read_framebuffer_ready(ctx, "glCopyPixels"))
+    return;
+  // §4.3.3: the buffer copied must exist in the read and in the draw framebuffer.
+  const Framebuffer& src = ctx->read_fb;
+  const bool copy_depth = type == GL_DEPTH || type == GL_DEPTH_STENCIL;
+  const bool copy_stencil = type == GL_STENCIL || type == GL_DEPTH_STENCIL;
+  if ((copy_depth && (ctx->fb.depth == nullptr || src.depth == nullptr)) ||
+      (copy_stencil && (ctx->fb.stencil == nullptr || src.stencil == nullptr)))
     return record_error(ctx, GL_INVALID_OPERATION, "glCopyPixels");
   if (!render_mode_is_render(ctx)) return raster_token(ctx, GL_COPY_PIXEL_TOKEN); // §5.3
-  if (!ctx->current.raster_pos.valid || ctx->fb.color == nullptr) return;
+  if (!ctx->current.raster_pos.valid || !ctx->fb.present() || !src.present()) return;
+  if (type == GL_COLOR && src.color == nullptr) return;
   // Source pixels outside the window are undefined (§4.3.2); Pineda makes no fragments for
   // them, so only the part inside is read and drawn, at its place in the full rectangle.
-  const Inside in = inside_fb(ctx->fb, x, y, width, height);
+  const Inside in = inside_fb(src, x, y, width, height);
   if (in.empty()) return;
   validate_state(ctx);
   const int iw = in.x1 - in.x0, ih = in.y1 - in.y0;
@@ -325,19 +366,29 @@ void GLAPIENTRY CopyPixels(GLint x, GLint y, GLsizei width, GLsizei height, GLen
   const size_t n = static_cast<size_t>(iw) * static_cast<size_t>(ih);
   const PixelStore tight = tight_store();
   const PixelTransferView xfer = pixel_transfer_view(ctx);
-  if (type == GL_STENCIL) {
+  if (type == GL_DEPTH_STENCIL) {
+    // EXT_packed_depth_stencil: both are read before either is written.
+    std::vector<float> z(n);
     std::vector<uint32_t> s(n);
-    read_pixels(ctx->fb, in.x0, in.y0, iw, ih, GL_STENCIL_INDEX, GL_UNSIGNED_INT, tight, s.data());
+    read_pixels(src, in.x0, in.y0, iw, ih, GL_DEPTH_COMPONENT, GL_FLOAT, tight, z.data());
+    read_pixels(src, in.x0, in.y0, iw, ih, GL_STENCIL_INDEX, GL_UNSIGNED_INT, tight, s.data());
+    transfer_depth(xfer, z.data(), n);
+    transfer_stencil(xfer, s.data(), n);
+    draw_depth_strip(ctx, p, z.data());
+    draw_stencil_rect(ctx->raster, ctx->fb, p, s.data(), nullptr);
+  } else if (type == GL_STENCIL) {
+    std::vector<uint32_t> s(n);
+    read_pixels(src, in.x0, in.y0, iw, ih, GL_STENCIL_INDEX, GL_UNSIGNED_INT, tight, s.data());
     transfer_stencil(xfer, s.data(), n);
     draw_stencil_rect(ctx->raster, ctx->fb, p, s.data(), nullptr);
   } else if (type == GL_DEPTH) {
     std::vector<float> z(n);
-    read_pixels(ctx->fb, in.x0, in.y0, iw, ih, GL_DEPTH_COMPONENT, GL_FLOAT, tight, z.data());
+    read_pixels(src, in.x0, in.y0, iw, ih, GL_DEPTH_COMPONENT, GL_FLOAT, tight, z.data());
     transfer_depth(xfer, z.data(), n);
     draw_depth_strip(ctx, p, z.data());
   } else {
     std::vector<float> c(n * 4);
-    read_pixels(read_view(ctx->fb), in.x0, in.y0, iw, ih, GL_RGBA, GL_FLOAT, tight, c.data());
+    read_pixels(src, in.x0, in.y0, iw, ih, GL_RGBA, GL_FLOAT, tight, c.data());
     if (rgba_transfer_active(xfer)) transfer_rgba(xfer, c.data(), n);
     draw_color_strip(ctx, p, c.data());
   }

@@ -7,11 +7,6 @@
 
 namespace pineda {
 
-// Points ctx->fb.color, color_also and read_color at the buffers DRAW_BUFFER and READ_BUFFER
-// name. Call when either changes or when the window-system layer attaches new buffers; does
-// nothing for a framebuffer with a single colour buffer.
-void select_color_buffers(Context* ctx);
-
 struct StateArea;
 extern const StateArea kFramebufferArea; // draw_read_buffer.cpp
 

@@ -156,9 +156,6 @@ bool get_fragment(Context& ctx, GLenum pname, QueryValues& out) {
   case GL_LOGIC_OP_MODE:
     out.ints({double(cb.logic_op)});
     return true;
-  case GL_DRAW_BUFFER:
-    out.ints({double(cb.draw_buffer)});
-    return true;
   case GL_COLOR_WRITEMASK:
     out.booleans(cb.color_mask, 4);
     return true;

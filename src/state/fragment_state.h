@@ -37,7 +37,9 @@ struct ColorBufferGroup {
   GLenum logic_op = GL_COPY;
   // §4.2.1, §4.3.2: FRONT when the context has no back buffer, BACK otherwise; a window-system
   // layer that gives the context a back buffer sets it (and PixelGroup::read_buffer) to BACK.
-  GLenum draw_buffer = GL_FRONT;
+  // DRAW_BUFFERi (GL 2.0 §4.2.1 DrawBuffers) of the bound draw framebuffer; DRAW_BUFFER is
+  // [0]. A framebuffer object keeps its own while another is bound (framebuffer_object.h).
+  GLenum draw_buffers[kMaxDrawBuffers] = {GL_FRONT};
   GLuint index_writemask = ~0u; // INDEX_WRITEMASK (all ones)
   bool color_mask[4] = {true, true, true, true};
   float clear_color[4] = {0, 0, 0, 0};

@@ -101,8 +101,9 @@ void derive_raster_state(Context& ctx, uint32_t dirty) {
     rs.depth_test = ctx.depth.test && ctx.fb.depth != nullptr;
     rs.depth_func = ctx.depth.func;
     rs.depth_write = ctx.depth.mask;
-    // GL 2.1 §4.2.1: with the draw buffer NONE no colour is written.
-    const bool draws_color = cb.draw_buffer != GL_NONE;
+    // GL 2.1 §4.2.1: with the draw buffer NONE no colour is written (the derived
+    // framebuffer then has no colour buffer, framebuffer_object.cpp).
+    const bool draws_color = ctx.fb.color != nullptr;
     for (int i = 0; i < 4; ++i)
       rs.color_write[i] = cb.color_mask[i] && draws_color;
     rs.blend = cb.blend;

@@ -23,9 +23,9 @@ namespace {
 void read_framebuffer(const Context* ctx, int x, int y, int w, int h, bool depth, float* out) {
   const size_t n = size_t(w) * size_t(h);
   std::fill(out, out + n * (depth ? 1 : 4), 0.0f);
-  if (ctx->fb.color == nullptr || w == 0 || h == 0) return;
+  if (!ctx->read_fb.present() || w == 0 || h == 0) return;
   PixelStore pack; // tightly packed floats
-  read_pixels(read_view(ctx->fb), x, y, w, h, depth ? GL_DEPTH_COMPONENT : GL_RGBA, GL_FLOAT, pack,
+  read_pixels(ctx->read_fb, x, y, w, h, depth ? GL_DEPTH_COMPONENT : GL_RGBA, GL_FLOAT, pack,
               out);
   if (depth)
     transfer_depth(pixel_transfer_view(ctx), out, n);
@@ -33,9 +33,23 @@ void read_framebuffer(const Context* ctx, int x, int y, int w, int h, bool depth
     transfer_rgba(pixel_transfer_view(ctx), out, n);
 }
 
-// The source buffer must exist: a depth texture needs a depth buffer (§3.8.2, §4.3.2).
-bool source_missing(const Context* ctx, bool depth) {
-  return depth ? ctx->fb.depth == nullptr : ctx->fb.color == nullptr;
+// The source buffer must exist: a depth texture needs a depth buffer (§3.8.2, §4.3.2), a
+// depth-stencil one a stencil buffer too (EXT_packed_depth_stencil).
+bool source_missing(const Context* ctx, bool depth, bool stencil = false) {
+  if (stencil && ctx->read_fb.stencil == nullptr) return true;
+  return depth ? ctx->read_fb.depth == nullptr : ctx->read_fb.color == nullptr;
+}
+
+// The stencil indices of the w x h rectangle at (x, y), through the stencil transfer
+// operations, into a DEPTH_STENCIL image (EXT_packed_depth_stencil).
+void copy_stencil(const Context* ctx, TexImage& im, int dims, int xoffset, int yoffset,
+                  int zoffset, int x, int y, int w, int h) {
+  if (im.stencil.empty() || ctx->read_fb.stencil == nullptr) return;
+  std::vector<uint32_t> s(size_t(w) * size_t(h), 0u);
+  PixelStore pack;
+  read_pixels(ctx->read_fb, x, y, w, h, GL_STENCIL_INDEX, GL_UNSIGNED_INT, pack, s.data());
+  transfer_stencil(pixel_transfer_view(ctx), s.data(), s.size());
+  store_stencil_region(im, dims, xoffset, yoffset, zoffset, w, h, s.data());
 }
 
 void copy_tex_image(const char* func, int dims, GLenum target, GLint level, GLenum internalformat,
@@ -60,18 +74,23 @@ void copy_tex_image(const char* func, int dims, GLenum target, GLint level, GLen
   if (width - bb > limit || (dims >= 2 && height - bb > limit))
     return record_error(ctx, GL_INVALID_VALUE, func);
   if (info.depth && it.cube) return record_error(ctx, GL_INVALID_OPERATION, func);
-  if (source_missing(ctx, info.depth)) return record_error(ctx, GL_INVALID_OPERATION, func);
+  // ARB_framebuffer_object §4.4.4: an incomplete read framebuffer is not read.
+  if (!read_framebuffer_ready(ctx, func)) return;
+  if (source_missing(ctx, info.depth, info.s != 0))
+    return record_error(ctx, GL_INVALID_OPERATION, func);
   TexImage im;
   set_image_info(im, internalformat, info, width, height, 1, border);
   const size_t count = size_t(width) * size_t(height);
   try {
-    if (info.depth)
-      im.z.assign(count, 0.0f);
-    else
+    if (info.depth) {
+      im.z.assign(count, 0u);
+      if (info.s != 0) im.stencil.assign(count, 0);
+    } else
       im.rgba.assign(count * 4, 0);
     std::vector<float> tmp(count * (info.depth ? 1 : 4));
     read_framebuffer(ctx, x, y, width, height, info.depth, tmp.data());
     store_region(im, dims, -border, dims >= 2 ? -border : 0, 0, width, height, 1, tmp.data());
+    copy_stencil(ctx, im, dims, -border, dims >= 2 ? -border : 0, 0, x, y, width, height);
   } catch (const std::bad_alloc&) {
     return record_error(ctx, GL_OUT_OF_MEMORY, func);
   } catch (const std::length_error&) {
@@ -93,13 +112,16 @@ void copy_tex_sub_image(const char* func, int dims, GLenum target, GLint level, 
   TexImage* im =
       sub_image_target(ctx, func, it, level, xoffset, yoffset, zoffset, width, height, 1);
   if (im == nullptr) return;
-  if (source_missing(ctx, im->is_depth)) return record_error(ctx, GL_INVALID_OPERATION, func);
+  if (!read_framebuffer_ready(ctx, func)) return;
+  if (source_missing(ctx, im->is_depth, !im->stencil.empty()))
+    return record_error(ctx, GL_INVALID_OPERATION, func);
   const size_t count = size_t(width) * size_t(height);
   if (count == 0) return;
   try {
     std::vector<float> tmp(count * (im->is_depth ? 1 : 4));
     read_framebuffer(ctx, x, y, width, height, im->is_depth, tmp.data());
     store_region(*im, dims, xoffset, yoffset, zoffset, width, height, 1, tmp.data());
+    copy_stencil(ctx, *im, dims, xoffset, yoffset, zoffset, x, y, width, height);
   } catch (const std::bad_alloc&) {
     return record_error(ctx, GL_OUT_OF_MEMORY, func);
   }

@@ -1,6 +1,8 @@
 // Texture internal formats (GL 2.1 §3.8.1 Tables 3.15-3.17).
 #include "state/tex_format.h"
 
+#include <GL/glext.h>
+
 #include <algorithm>
 #include <cmath>
 
@@ -196,6 +198,12 @@ bool lookup_internal_format(GLint internalformat, TexFormatInfo& out) {
   case GL_DEPTH_COMPONENT32:
     out = depth(32);
     return true;
+  // EXT_packed_depth_stencil.
+  case GL_DEPTH_STENCIL:
+  case GL_DEPTH24_STENCIL8:
+    out = depth(24);
+    out.s = 8;
+    return true;
   default:
     return false;
   }
@@ -236,14 +244,11 @@ void rgba_to_texels(const TexFormatInfo& f, const float* rgba, int n, uint8_t* t
   }
 }
 
-void depth_to_texels(const TexFormatInfo& f, const float* z, int n, float* out) {
+void depth_to_texels(const TexFormatInfo& f, const float* z, int n, uint32_t* out) {
+  const double max = depth_texel_max(f.d);
   for (int k = 0; k < n; ++k) {
-    float v = z[k] == z[k] ? std::clamp(z[k], 0.0f, 1.0f) : 0.0f;
-    if (f.d < 32) {
-      const double max = double((1u << f.d) - 1);
-      v = float(std::nearbyint(double(v) * max) / max);
-    }
-    out[k] = v;
+    const float v = z[k] == z[k] ? std::clamp(z[k], 0.0f, 1.0f) : 0.0f;
+    out[k] = uint32_t(std::nearbyint(double(v) * max));
   }
 }
 

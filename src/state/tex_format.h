@@ -3,7 +3,8 @@
 // stored texels. Colour texels are stored as four 8-bit components already expanded by base
 // format (Table 3.23); components the format keeps with fewer than 8 bits are rounded to that
 // resolution first, as Mesa llvmpipe stores RGBA4, RGB5_A1, R3_G3_B2 ... in packed formats.
-// Depth texels are floats rounded to the depth resolution.
+// Depth texels are unsigned integers of the depth resolution, as a depth buffer stores them;
+// DEPTH_STENCIL images (EXT_packed_depth_stencil) have an 8-bit stencil index beside.
 #pragma once
 
 #include <GL/gl.h>
@@ -23,6 +24,7 @@ struct TexFormatInfo {
   // GL 2.1 §3.8.1 Table 3.16 (EXT_texture_sRGB): SRGB*, SLUMINANCE*. The texels are stored as
   // given, sRGB-encoded, and decoded when sampled (§3.8.15).
   bool srgb = false;
+  uint8_t s = 0; // stencil bits: 8 for DEPTH_STENCIL formats (depth is then true too)
 };
 
 // The format `internalformat` names (Tables 3.16, 3.17 and the legacy 1-4), or false for a
@@ -40,7 +42,7 @@ GLenum uncompressed_internal_format(GLenum internalformat);
 void rgba_to_texels(const TexFormatInfo& f, const float* rgba, int n, uint8_t* texels);
 
 // Rounds `n` depth values (clamped to [0,1]) to the format's depth resolution.
-void depth_to_texels(const TexFormatInfo& f, const float* z, int n, float* out);
+void depth_to_texels(const TexFormatInfo& f, const float* z, int n, uint32_t* out);
 
 // The RGBA group a stored texel stands for, as glGetTexImage returns it (§6.1.4): components
 // missing from the base format read as 0 (colour) or 1 (alpha); luminance and intensity appear

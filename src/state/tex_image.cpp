@@ -3,6 +3,8 @@
 // the image queries of §6.1.3-§6.1.4 (glGetTexLevelParameter, glGetTexImage).
 #include "state/tex_image.h"
 
+#include <GL/glext.h>
+
 #include <algorithm>
 #include <cmath>
 #include <cstring>
@@ -30,6 +32,22 @@ namespace {
 GLenum client_format_type_error(GLenum format, GLenum type) {
   if (format == GL_STENCIL_INDEX) return GL_INVALID_ENUM;
   return check_pixel_format_type(format, type);
+}
+
+// §3.8.1 as GL 3.3 words it with EXT_packed_depth_stencil: images of a DEPTH_COMPONENT or
+// DEPTH_STENCIL base format take DEPTH_COMPONENT or DEPTH_STENCIL data (a depth image keeps
+// the depth of DEPTH_STENCIL groups; a depth-stencil image given depth alone keeps its
+// stencil), other images neither (INVALID_OPERATION otherwise).
+bool format_matches(bool depth, GLenum format) {
+  const bool depth_data = format == GL_DEPTH_COMPONENT || format == GL_DEPTH_STENCIL;
+  return depth == depth_data;
+}
+
+// STENCIL_INDEX data is INVALID_ENUM for texture images (§3.8.1), except for depth images,
+// where the mismatch of base format and data is the error (INVALID_OPERATION), as GL 3.3 and
+// Mesa order them.
+GLenum stencil_data_error(bool depth) {
+  return depth ? GL_INVALID_OPERATION : GL_INVALID_ENUM;
 }
 
 // 1D and 2D images ignore IMAGE_HEIGHT and SKIP_IMAGES (§3.8.1).
@@ -73,6 +91,17 @@ void unpack_into(const Context* ctx, TexImage& im, int dims, int x, int y, int z
   PixelStore st = store_for(ctx->pixel_store.unpack, dims);
   std::vector<float> tmp(size_t(w) * size_t(h) * (im.is_depth ? 1 : 4));
   const int skip = st.skip_images;
+  if (format == GL_DEPTH_STENCIL) {
+    // EXT_packed_depth_stencil: depth and stencil of each group.
+    std::vector<uint32_t> s(tmp.size());
+    for (int k = 0; k < d; ++k) {
+      st.skip_images = skip + k;
+      unpack_depth_stencil(pixels, w, h, 1, st, pixel_transfer_view(ctx), tmp.data(), s.data());
+      store_region(im, dims, x, y, z + k, w, h, 1, tmp.data());
+      store_stencil_region(im, dims, x, y, z + k, w, h, s.data());
+    }
+    return;
+  }
   for (int k = 0; k < d; ++k) {
     st.skip_images = skip + k;
     if (im.is_depth)
@@ -87,7 +116,14 @@ void unpack_into(const Context* ctx, TexImage& im, int dims, int x, int y, int z
 void pack_groups(const Context* ctx, const float* in, int w, int h, int d, int dims, GLenum format,
                  GLenum type, void* pixels) {
   const PixelStore st = store_for(ctx->pixel_store.pack, dims);
-  if (format == GL_DEPTH_COMPONENT)
+  if (format == GL_DEPTH_STENCIL) {
+    // `in` holds w*h*d depths followed by as many stencil indices (as floats).
+    const size_t n = size_t(w) * size_t(h) * size_t(d);
+    std::vector<uint32_t> s(n);
+    for (size_t i = 0; i < n; ++i)
+      s[i] = uint32_t(in[n + i]);
+    pack_depth_stencil(in, s.data(), w, h, d, st, pixels);
+  } else if (format == GL_DEPTH_COMPONENT)
     pack_depth(in, w, h, d, type, st, pixels);
   else
     pack_rgba(in, w, h, d, format, type, st, pixels);
@@ -108,6 +144,11 @@ void tex_image(const char* func, int dims, GLenum target, GLint level, GLint int
   ImageTarget it;
   if (!image_target(ctx, target, dims, true, it))
     return record_error(ctx, GL_INVALID_ENUM, func, target);
+  if (format == GL_STENCIL_INDEX) {
+    TexFormatInfo f;
+    const bool depth_image = lookup_internal_format(internalformat, f) && f.depth;
+    return record_error(ctx, stencil_data_error(depth_image), func, format);
+  }
   const GLenum fe = client_format_type_error(format, type);
   if (fe == GL_INVALID_ENUM) return record_error(ctx, fe, func, format);
   if (level < 0 || level >= it.max_levels) return record_error(ctx, GL_INVALID_VALUE, func);
@@ -124,7 +165,7 @@ void tex_image(const char* func, int dims, GLenum target, GLint level, GLint int
   if (fe != GL_NO_ERROR) return record_error(ctx, fe, func);
   // §3.8.1: depth formats go only with 1D and 2D targets, and with DEPTH_COMPONENT data.
   if (info.depth && (dims == 3 || it.cube)) return record_error(ctx, GL_INVALID_OPERATION, func);
-  if (info.depth != (format == GL_DEPTH_COMPONENT))
+  if (!format_matches(info.depth, format))
     return record_error(ctx, GL_INVALID_OPERATION, func);
   // The sizes the implementation supports at this level (§3.8.1, Table 6.36 limits).
   const int limit = it.max_size >> level;
@@ -162,7 +203,8 @@ void tex_image(const char* func, int dims, GLenum target, GLint level, GLint int
     return;
   try {
     if (info.depth) {
-      im.z.assign(count, 0.0f);
+      im.z.assign(count, 0u);
+      if (info.s != 0) im.stencil.assign(count, 0);
     } else {
       im.rgba.assign(count * 4, 0);
     }
@@ -187,11 +229,13 @@ void tex_sub_image(const char* func, int dims, GLenum target, GLint level, GLint
   if (!image_target(ctx, target, dims, false, it))
     return record_error(ctx, GL_INVALID_ENUM, func, target);
   const GLenum fe = client_format_type_error(format, type);
-  if (fe == GL_INVALID_ENUM) return record_error(ctx, fe, func, format);
+  if (fe == GL_INVALID_ENUM && format != GL_STENCIL_INDEX)
+    return record_error(ctx, fe, func, format);
   TexImage* im = sub_image_target(ctx, func, it, level, x, y, z, w, h, d);
   if (im == nullptr) return;
+  if (format == GL_STENCIL_INDEX) return record_error(ctx, stencil_data_error(im->is_depth), func);
   if (fe != GL_NO_ERROR) return record_error(ctx, fe, func);
-  if (im->is_depth != (format == GL_DEPTH_COMPONENT))
+  if (!format_matches(im->is_depth, format))
     return record_error(ctx, GL_INVALID_OPERATION, func);
   const size_t count = size_t(w) * size_t(h) * size_t(d);
   if (count == 0) return;
@@ -276,6 +320,9 @@ bool level_param(const TexImage& im, GLenum pname, GLint* v) {
   case GL_TEXTURE_DEPTH_SIZE:
     *v = im.depth_size;
     return true;
+  case GL_TEXTURE_STENCIL_SIZE: // EXT_packed_depth_stencil
+    *v = im.stencil_size;
+    return true;
   case GL_TEXTURE_COMPRESSED:
     *v = GL_FALSE;
     return true;
@@ -359,6 +406,7 @@ void set_image_info(TexImage& im, GLenum internalformat, const TexFormatInfo& f,
   im.srgb = f.srgb;
   im.red_size = f.r, im.green_size = f.g, im.blue_size = f.b, im.alpha_size = f.a;
   im.luminance_size = f.l, im.intensity_size = f.i, im.depth_size = f.d;
+  im.stencil_size = f.s;
 }
 
 void image_changed(Context* ctx, TextureObject& tex, int face, int level, int dims,
@@ -486,6 +534,18 @@ void downsample_srgb(const TexImage& src, TexImage& dst, int dims) {
 
 } // namespace
 
+void store_stencil_region(TexImage& im, int dims, int x, int y, int z, int w, int h,
+                          const uint32_t* s) {
+  if (im.stencil.empty()) return;
+  const int bi = im.border, bj = dims >= 2 ? im.border : 0, bk = dims >= 3 ? im.border : 0;
+  for (int j = 0; j < h; ++j) {
+    const size_t idx = (size_t(z + bk) * size_t(im.height) + size_t(y + j + bj)) *
+                           size_t(im.width) + size_t(x + bi);
+    for (int i = 0; i < w; ++i)
+      im.stencil[idx + size_t(i)] = uint8_t(s[size_t(j) * size_t(w) + size_t(i)] & 0xffu);
+  }
+}
+
 void downsample_image(const TexImage& src, TexImage& dst, int dims) {
   const size_t count = size_t(dst.width) * size_t(dst.height) * size_t(dst.depth);
   TexelImage from, to;
@@ -495,8 +555,9 @@ void downsample_image(const TexImage& src, TexImage& dst, int dims) {
   to.width = dst.width, to.height = dst.height, to.depth = dst.depth;
   to.border = dst.border;
   if (src.is_depth) {
-    dst.z.assign(count, 0.0f);
+    dst.z.assign(count, 0u);
     from.z = src.z.data();
+    from.z_max = depth_texel_max(src.depth_size);
     to.z_out = dst.z.data();
   } else if (src.srgb) {
     dst.rgba.assign(count * 4, 0);
@@ -507,6 +568,21 @@ void downsample_image(const TexImage& src, TexImage& dst, int dims) {
     to.rgba_out = dst.rgba.data();
   }
   downsample_texels(from, to, dims);
+  if (!src.stencil.empty()) {
+    // Stencil indices are not filtered: each texel takes its source's nearest one.
+    dst.stencil.assign(count, 0);
+    for (int k = 0; k < dst.depth; ++k)
+      for (int j = 0; j < dst.height; ++j)
+        for (int i = 0; i < dst.width; ++i) {
+          const int si = std::min(src.width - 1, i * src.width / std::max(dst.width, 1));
+          const int sj = std::min(src.height - 1, j * src.height / std::max(dst.height, 1));
+          const int sk = std::min(src.depth - 1, k * src.depth / std::max(dst.depth, 1));
+          dst.stencil[(size_t(k) * size_t(dst.height) + size_t(j)) * size_t(dst.width) +
+                      size_t(i)] =
+              src.stencil[(size_t(sk) * size_t(src.height) + size_t(sj)) * size_t(src.width) +
+                          size_t(si)];
+        }
+  }
 }
 
 void generate_mipmaps(TextureObject& tex, int face, int dims) {
@@ -600,8 +676,10 @@ void GLAPIENTRY GetTexImage(GLenum target, GLint level, GLenum format, GLenum ty
   if (fe != GL_NO_ERROR) return record_error(ctx, fe, "glGetTexImage");
   const TexImage& im = it.tex->images[it.face][level];
   if (im.width == 0) return;
-  if (im.is_depth != (format == GL_DEPTH_COMPONENT))
-    return record_error(ctx, GL_INVALID_OPERATION, "glGetTexImage");
+  // A depth-stencil image reads back as DEPTH_STENCIL or as its depth alone.
+  const bool ok = format_matches(im.is_depth, format) &&
+                  (format != GL_DEPTH_STENCIL || !im.stencil.empty());
+  if (!ok) return record_error(ctx, GL_INVALID_OPERATION, "glGetTexImage");
   // §6.1.4: into the pixel pack buffer when one is bound.
   if (!pack_memory(ctx, pixels,
                    client_image_bytes(im.width, im.height, im.depth, format, type,
@@ -609,11 +687,19 @@ void GLAPIENTRY GetTexImage(GLenum target, GLint level, GLenum format, GLenum ty
                    pixel_type_unit(type), "glGetTexImage", &pixels))
     return;
   if (pixels == nullptr) return;
+  // What drawing wrote into an attached image is read in its base format.
+  normalize_drawn_images(ctx);
   const size_t count = size_t(im.width) * size_t(im.height) * size_t(im.depth);
   try {
     std::vector<float> tmp;
     if (im.is_depth) {
-      tmp.assign(im.z.begin(), im.z.end());
+      const double max = depth_texel_max(im.depth_size);
+      tmp.reserve(im.z.size());
+      for (const uint32_t z : im.z)
+        tmp.push_back(float(double(z) / max));
+      if (format == GL_DEPTH_STENCIL)
+        for (const uint8_t s : im.stencil)
+          tmp.push_back(float(s));
     } else {
       tmp.resize(count * 4);
       // Luminance read-backs take L from R alone (not R + G + B as ReadPixels does), as

@@ -68,4 +68,9 @@ TexImage* sub_image_target(Context* ctx, const char* func, const ImageTarget& it
 void store_region(TexImage& im, int dims, int x, int y, int z, int w, int h, int d,
                   const float* groups);
 
+// Writes w x h stencil indices into the stencil of a DEPTH_STENCIL image at border-relative
+// (x, y) of slice z (EXT_packed_depth_stencil); nothing for other images.
+void store_stencil_region(TexImage& im, int dims, int x, int y, int z, int w, int h,
+                          const uint32_t* s);
+
 } // namespace pineda

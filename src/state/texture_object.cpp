@@ -375,7 +375,7 @@ void GLAPIENTRY GenTextures(GLsizei n, GLuint* textures) {
     while (objs.count(next) != 0)
       ++next;
     // A generated name is reserved; it becomes a texture object when first bound (§3.8.12).
-    auto obj = std::make_unique<TextureObject>();
+    auto obj = std::make_shared<TextureObject>();
     obj->name = next;
     objs.emplace(next, std::move(obj));
     textures[i] = next++;
@@ -389,7 +389,11 @@ void GLAPIENTRY DeleteTextures(GLsizei n, const GLuint* textures) {
   bool changed = false;
   for (GLsizei i = 0; i < n; ++i) {
     const GLuint name = textures[i];
-    if (name == 0 || ctx->shared->textures.erase(name) == 0) continue;
+    auto it = name == 0 ? ctx->shared->textures.end() : ctx->shared->textures.find(name);
+    if (it == ctx->shared->textures.end()) continue;
+    // ARB_framebuffer_object §4.4.2.3: detached from the bound framebuffers; others keep it.
+    detach_deleted_texture(ctx, it->second.get());
+    ctx->shared->textures.erase(it);
     // §3.8.12: a deleted bound texture reverts the binding to the default object (0).
     for (auto& unit : ctx->texobj.bound)
       for (GLuint& b : unit)
@@ -413,7 +417,7 @@ void GLAPIENTRY BindTexture(GLenum target, GLuint texture) {
   if (texture != 0) {
     auto& slot = ctx->shared->textures[texture];
     if (!slot) {
-      slot = std::make_unique<TextureObject>();
+      slot = std::make_shared<TextureObject>();
       slot->name = texture;
     }
     // §3.8.12: an object keeps the dimensionality of its first binding.

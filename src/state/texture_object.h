@@ -31,8 +31,12 @@ struct TexImage {
   // Component resolutions reported by glGetTexLevelParameter (TEXTURE_RED_SIZE ...).
   uint8_t red_size = 0, green_size = 0, blue_size = 0, alpha_size = 0;
   uint8_t luminance_size = 0, intensity_size = 0, depth_size = 0;
+  uint8_t stencil_size = 0; // 8 for DEPTH_STENCIL images (EXT_packed_depth_stencil)
   std::vector<uint8_t> rgba; // colour: 4 bytes per texel, expanded by Table 3.23, rows bottom up
-  std::vector<float> z;      // depth: one float per texel
+  // depth: one value per texel of depth_size bits, as a depth buffer of that many bits stores
+  // it (sampler.h depth_texel_max), so that framebuffer objects render into it directly
+  std::vector<uint32_t> z;
+  std::vector<uint8_t> stencil; // DEPTH_STENCIL images: one stencil index per texel
 };
 
 // The parameters of a texture object (GL 2.1 Table 6.19, §3.8.4, §3.8.14).

@@ -124,6 +124,7 @@ bool make_sampler_view(const TextureObject& tex, SamplerView& out) {
       SamplerLevel& sl = out.levels[f][l];
       sl.rgba = im.rgba.empty() ? nullptr : im.rgba.data();
       sl.z = im.z.empty() ? nullptr : im.z.data();
+      sl.z_max = depth_texel_max(im.depth_size);
       sl.width = im.width;
       sl.height = dims >= 2 ? im.height : 1;
       sl.depth = dims >= 3 ? im.depth : 1;

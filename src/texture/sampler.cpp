@@ -194,7 +194,7 @@ inline void fetch(const LevelCtx& c, int i, int j, int k, float* out) {
   }
   const size_t idx = texel_index(c, i, j, k);
   if (c.v->is_depth) {
-    const float z = c.lv->z != nullptr ? c.lv->z[idx] : 0.0f;
+    const float z = c.lv->z != nullptr ? float(double(c.lv->z[idx]) / c.lv->z_max) : 0.0f;
     out[0] = out[1] = out[2] = out[3] = z;
     return;
   }
@@ -606,9 +606,11 @@ void downsample_texels(const TexelImage& src, const TexelImage& dst, int dims) {
                 const float wj = dims >= 2 ? (jj ? aj.w : 1.0f - aj.w) : 1.0f;
                 const float wk = dims >= 3 ? (kk ? ak.w : 1.0f - ak.w) : 1.0f;
                 acc += wi * wj * wk *
-                       src.z[src_index(ii ? ai.i1 : ai.i0, jj ? aj.i1 : aj.i0, kk ? ak.i1 : ak.i0)];
+                       float(double(src.z[src_index(ii ? ai.i1 : ai.i0, jj ? aj.i1 : aj.i0,
+                                                    kk ? ak.i1 : ak.i0)]) /
+                             src.z_max);
               }
-          dst.z_out[o] = acc;
+          dst.z_out[o] = uint32_t(std::nearbyint(std::clamp(double(acc), 0.0, 1.0) * src.z_max));
           continue;
         }
         int res[2][4] = {};

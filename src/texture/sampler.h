@@ -27,9 +27,17 @@ inline int texture_dims(GLenum target) {
 // One mipmap level of one face as the sampler reads it. Sizes include the border.
 struct SamplerLevel {
   const uint8_t* rgba = nullptr; // colour: 4 bytes per texel, expanded by Table 3.23
-  const float* z = nullptr;      // depth textures: one float per texel
+  const uint32_t* z = nullptr;   // depth textures: one value per texel, in [0, z_max]
+  double z_max = 1.0;            // 2^bits - 1 of the depth image
   int width = 0, height = 0, depth = 0;
 };
+
+// The largest value of a depth texel of `bits` bits (unsigned normalized, GL 2.1 §2.14.9 eq.
+// 2.3): depth images are stored as the depth buffer stores depth, so that a framebuffer
+// object can render into them (ARB_framebuffer_object).
+inline double depth_texel_max(int bits) {
+  return bits >= 32 ? 4294967295.0 : double((uint64_t{1} << bits) - 1);
+}
 
 struct SamplerView {
   GLenum target = GL_TEXTURE_2D;
@@ -93,9 +101,10 @@ struct TexelImage {
   int width = 0, height = 0, depth = 0, border = 0;
   bool is_depth = false;
   const uint8_t* rgba = nullptr;
-  const float* z = nullptr;
+  const uint32_t* z = nullptr;
+  double z_max = 1.0; // depth_texel_max of the depth image (source and destination alike)
   uint8_t* rgba_out = nullptr;
-  float* z_out = nullptr;
+  uint32_t* z_out = nullptr;
 };
 
 // The next level of GENERATE_MIPMAP (GL 2.1 §3.8.8): each texel of `dst` is the bilinear

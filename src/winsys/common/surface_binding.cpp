@@ -2,12 +2,13 @@
 #include "winsys/common/surface_binding.h"
 
 #include "state/context.h"
-#include "state/draw_read_buffer.h"
+#include "state/framebuffer_object.h"
 
 namespace pineda::winsys {
 
 void bind_buffers(Context* ctx, const SurfaceBuffers& b) {
-  Framebuffer& fb = ctx->fb;
+  Framebuffer& fb = ctx->window;
+  fb = Framebuffer{};
   fb.width = b.width;
   fb.height = b.height;
   fb.color_format = b.format;
@@ -16,31 +17,30 @@ void bind_buffers(Context* ctx, const SurfaceBuffers& b) {
   fb.color_stride = b.stride;
   fb.depth_bits = b.depth_bits;
   fb.depth = b.depth;
+  fb.depth_stride = b.width;
   fb.stencil_bits = b.stencil_bits;
   fb.stencil = b.stencil;
+  fb.stencil_stride = b.width;
   fb.accum_bits = b.accum_bits;
   fb.accum = b.accum;
   // GL 2.1 table 4.4: a double-buffered window has a front and a back buffer; a pbuffer only
   // its back buffer (it is never shown); a single-buffered window or a pixmap its front buffer.
-  fb.front_color = fb.back_color = fb.color_also = fb.read_color = nullptr;
   if (b.front != nullptr) {
     ctx->color_buffers = kColorBufferFrontLeft | kColorBufferBackLeft;
     fb.back_color = fb.color;
     fb.front_color = b.front;
-    // The window system is in the middle of its own call: the hook is not run from here.
-    auto* const hook = ctx->front_selected;
-    ctx->front_selected = nullptr;
-    select_color_buffers(ctx);
-    ctx->front_selected = hook;
   } else {
     ctx->color_buffers = b.back ? kColorBufferBackLeft : kColorBufferFrontLeft;
   }
-  mark_dirty(ctx, kDirtyFramebuffer);
+  // The window system is in the middle of its own call: the front_selected hook is not run.
+  framebuffers_changed(ctx);
+  sync_framebuffers(ctx);
 }
 
 void unbind_buffers(Context* ctx) {
-  ctx->fb = Framebuffer{};
-  mark_dirty(ctx, kDirtyFramebuffer);
+  ctx->window = Framebuffer{};
+  framebuffers_changed(ctx);
+  sync_framebuffers(ctx);
 }
 
 bool never_current(const Context* ctx) {
@@ -55,9 +55,11 @@ void first_make_current(Context* ctx, int width, int height, bool has_back) {
   ctx->scissor.box[2] = width;
   ctx->scissor.box[3] = height;
   const GLenum initial = has_back ? GL_BACK : GL_FRONT;
-  ctx->color_buffer.draw_buffer = initial;
+  ctx->color_buffer.draw_buffers[0] = initial;
   ctx->pixel.read_buffer = initial;
   mark_dirty(ctx, kDirtyViewport | kDirtyFragment);
+  framebuffers_changed(ctx);
+  sync_framebuffers(ctx);
 }
 
 void set_hooks(Context* ctx, void (*present_front)(Context*), void (*front_selected)(Context*)) {
@@ -67,13 +69,18 @@ void set_hooks(Context* ctx, void (*present_front)(Context*), void (*front_selec
 
 bool draws_front(const Context* ctx) {
   const Framebuffer& fb = ctx->fb;
-  return fb.front_color != nullptr &&
-         (fb.color == fb.front_color || fb.color_also == fb.front_color);
+  const uint8_t* front = ctx->window.front_color;
+  if (front == nullptr || ctx->fbo.draw_binding != 0) return false;
+  if (fb.color == front) return true;
+  for (int i = 0; i < fb.more_count; ++i)
+    if (fb.more[i].data == front) return true;
+  return false;
 }
 
 bool uses_front(const Context* ctx) {
-  const Framebuffer& fb = ctx->fb;
-  return draws_front(ctx) || (fb.front_color != nullptr && fb.read_color == fb.front_color);
+  const uint8_t* front = ctx->window.front_color;
+  return draws_front(ctx) ||
+         (front != nullptr && ctx->fbo.read_binding == 0 && ctx->read_fb.color == front);
 }
 
 } // namespace pineda::winsys

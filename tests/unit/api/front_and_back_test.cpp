@@ -13,6 +13,7 @@
 #include "api_fixture.h"
 #include "state/context.h"
 #include "state/draw_read_buffer.h"
+#include "state/framebuffer_object.h"
 
 namespace {
 
@@ -29,8 +30,9 @@ protected:
     // one (winsys/glx/glx_drawable.cpp).
     front.assign(kN * 4, 0);
     ctx->color_buffers = pineda::kColorBufferFrontLeft | pineda::kColorBufferBackLeft;
-    ctx->fb.back_color = ctx->fb.color;
-    ctx->fb.front_color = front.data();
+    ctx->window.back_color = ctx->window.color;
+    ctx->window.front_color = front.data();
+    pineda::framebuffers_changed(ctx);
     for (int i = 0; i < kN * 4; ++i) {
       front_start.push_back(static_cast<uint8_t>(i * 37 + 11));
       back_start.push_back(static_cast<uint8_t>(i * 53 + 200));
@@ -43,7 +45,7 @@ protected:
 
   void reset() {
     std::memcpy(front.data(), front_start.data(), front.size());
-    std::memcpy(ctx->fb.back_color, back_start.data(), back_start.size());
+    std::memcpy(ctx->window.back_color, back_start.data(), back_start.size());
     std::memcpy(ctx->fb.depth, depth_start.data(), depth_start.size() * 4);
     std::memcpy(ctx->fb.stencil, stencil_start.data(), stencil_start.size());
   }
@@ -55,7 +57,7 @@ protected:
   Result result() const {
     Result r;
     r.front = front;
-    r.back.assign(ctx->fb.back_color, ctx->fb.back_color + kN * 4);
+    r.back.assign(ctx->window.back_color, ctx->window.back_color + kN * 4);
     r.depth.assign(ctx->fb.depth, ctx->fb.depth + kN);
     r.stencil.assign(ctx->fb.stencil, ctx->fb.stencil + kN);
     return r;

@@ -440,8 +440,9 @@ TEST(TextureSampler, DepthCompare) {
   im.width = 2, im.height = 1, im.depth = 1;
   im.is_depth = true;
   im.internal_format = GL_DEPTH_COMPONENT;
-  im.depth_size = 24;
-  im.z = {0.25f, 0.75f};
+  // Depth texels are stored as a 32-bit depth buffer stores them: 0.25 and 0.75.
+  im.depth_size = 32;
+  im.z = {1073741824u, 3221225471u};
   tex.params.min_filter = tex.params.mag_filter = GL_NEAREST;
   tex.params.wrap_s = tex.params.wrap_t = GL_CLAMP_TO_EDGE;
   SamplerView v;
