@@ -18,7 +18,11 @@ constexpr int kAttrTex0 = 8;   // texture unit u at kAttrTex0 + 4*u, (s,t,r,q)
 constexpr int kAttrFog = kAttrTex0 + 4 * kMaxTexUnits; // 24: fog coordinate / factor
 constexpr int kAttrBackColor = 28;                     // two-sided lighting: back primary colour
 constexpr int kAttrBackColor2 = 32;                    // two-sided lighting: back secondary colour
-constexpr int kMaxAttr = 36;
+// With a GLSL program, the user varyings the fragment shader reads follow, packed as the link
+// packs them (state/program_draw.cpp): MAX_VARYING_FLOATS of them at most.
+constexpr int kAttrVarying0 = 36;
+constexpr int kMaxVaryingAttr = 64;
+constexpr int kMaxAttr = kAttrVarying0 + kMaxVaryingAttr;
 
 // Clip code bits (GL 2.1 §2.12). A bit is set when the vertex is outside that half-space.
 enum ClipBit : uint32_t {
@@ -34,8 +38,9 @@ enum ClipBit : uint32_t {
 constexpr uint32_t kClipFrustumMask = 0x3f;
 
 // The fields the primitive assembly and the triangle setup read for every primitive (window
-// position, clip code, primary colour) come first, inside the first 64 bytes; with the
-// alignment each vertex's hot fields are one cache line.
+// position, clip code, clip coordinates, primary colour) come first, inside the first 64
+// bytes; with the alignment each vertex's hot fields are one cache line, and a draw touches
+// only the attribute lines up to RasterState::attr_count.
 struct alignas(64) PVertex {
   float win[4];      // window x, y; z after depth range in [0,1]; win[3] = 1 / clip w.
                      // Valid whenever clipmask == 0, and for every vertex the clipper emits.
@@ -43,8 +48,8 @@ struct alignas(64) PVertex {
   uint32_t edgeflag; // GL edge flag (1 = boundary edge starts here)
   // Derived point size (GL 2.1 §3.3 eq 3.1) when distance attenuation is on; 1 otherwise.
   float point_size;
-  float attr[kMaxAttr];
   float clip[4]; // clip coordinates (x, y, z, w)
+  float attr[kMaxAttr];
 };
 
 } // namespace pineda

@@ -241,12 +241,20 @@ void draw_vertices(DrawContext& dc, const DrawInput& in) {
   // range per worker thread (raster/workers.h). Material changes between Begin and End
   // (immediate mode, a few vertices) depend on the vertex index: they stay on one thread.
   RasterWorkers* const workers = src.workers;
+  // A vertex shader (geometry/vertex_program.h) or the fixed-function loop.
+  const VertexProgram* const program = in.vertex_program;
+  const auto process = [&](const VertexJob& j) {
+    if (program != nullptr)
+      return run_vertex_program(*program, *j.cs, *j.vp, j.in, static_cast<size_t>(j.in - in.in),
+                                j.out, j.n);
+    transform(j, lit, extra);
+  };
   const auto transform_all = [&](const VertexJob& range) {
     const size_t m = range.n;
     const int threads = m >= kShareVertexCount && range.change_count == 0 && workers != nullptr
                             ? workers->threads()
                             : 1;
-    if (threads <= 1) return transform(range, lit, extra);
+    if (threads <= 1) return process(range);
     auto part = [&](int i) {
       VertexJob j = range;
       const auto t = static_cast<size_t>(threads);
@@ -254,7 +262,7 @@ void draw_vertices(DrawContext& dc, const DrawInput& in) {
       j.in = range.in + lo;
       j.out = range.out + lo;
       j.n = hi - lo;
-      transform(j, lit, extra);
+      process(j);
     };
     workers->run(part);
   };

@@ -22,6 +22,7 @@
 #include "geometry/input_vertex.h"
 #include "geometry/light_eval.h"
 #include "geometry/texcoord.h"
+#include "geometry/vertex_program.h"
 #include "raster/workers.h"
 
 namespace pineda {
@@ -78,6 +79,8 @@ struct DrawInput {
   RenderRecords* records = nullptr;
   // Feedback of texture coordinates reports unit 0's through its texture matrix (§2.11.4).
   const glm::mat4* texture0 = nullptr;
+  // A vertex shader runs in place of the fixed-function transform and lighting (§2.20).
+  const VertexProgram* vertex_program = nullptr;
 };
 
 struct DrawCache; // draw_cache.h

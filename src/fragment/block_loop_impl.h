@@ -919,34 +919,40 @@ void block_loop(const FragCtx& ctx, const FragInputs& in, int bx, int by, uint64
     // test decides depends on texturing or fog (§4.1.6 needs the window z alone), so every row
     // is tested first and only the fragments that pass are textured. The depth buffer is
     // written before any colour, which changes nothing: each pixel is tested and written once.
-    uint64_t live = 0;
-    for (uint64_t rest = mask; rest != 0;) {
-      const int j = std::countr_zero(rest) >> 3;
-      const unsigned m = static_cast<unsigned>(rest >> (8 * j)) & 0xffu;
-      rest &= ~(0xffull << (8 * j));
-      const int y = by + j;
-      live |= static_cast<uint64_t>(depth_row<D>(ctx, in, bx, y, bx - in.ox, y - in.oy, m))
-              << (8 * j);
+    // A fragment shader that may discard decides first (§3.11.2), on the path below.
+    if (!ctx.late_depth) {
+      uint64_t live = 0;
+      for (uint64_t rest = mask; rest != 0;) {
+        const int j = std::countr_zero(rest) >> 3;
+        const unsigned m = static_cast<unsigned>(rest >> (8 * j)) & 0xffu;
+        rest &= ~(0xffull << (8 * j));
+        const int y = by + j;
+        live |= static_cast<uint64_t>(depth_row<D>(ctx, in, bx, y, bx - in.ox, y - in.oy, m))
+                << (8 * j);
+      }
+      if (live == 0) return;
+      live = shade_block(ctx, in, bx, by, live, shaded_block);
+      const bool in_buffer = bx + N <= ctx.fb_width;
+      while (live != 0) {
+        const int j = std::countr_zero(live) >> 3;
+        const unsigned m = static_cast<unsigned>(live >> (8 * j)) & 0xffu;
+        live &= ~(0xffull << (8 * j));
+        uint8_t* const row = ctx.color + static_cast<ptrdiff_t>(by + j) * ctx.color_stride +
+                             static_cast<ptrdiff_t>(bx) * L::bpp;
+        Row s;
+        per_fragment_row<P>(shaded_block, j, s);
+        if constexpr (L::bpp == 4)
+          write_row4<F, C, B, X>(ctx, row, m, in_buffer, s);
+        else
+          write_row3<C, B, X>(ctx, row, m, s);
+      }
+      return;
     }
-    if (live == 0) return;
-    shade_block(ctx, in, bx, by, live, shaded_block);
-    const bool in_buffer = bx + N <= ctx.fb_width;
-    while (live != 0) {
-      const int j = std::countr_zero(live) >> 3;
-      const unsigned m = static_cast<unsigned>(live >> (8 * j)) & 0xffu;
-      live &= ~(0xffull << (8 * j));
-      uint8_t* const row = ctx.color + static_cast<ptrdiff_t>(by + j) * ctx.color_stride +
-                           static_cast<ptrdiff_t>(bx) * L::bpp;
-      Row s;
-      per_fragment_row<P>(shaded_block, j, s);
-      if constexpr (L::bpp == 4)
-        write_row4<F, C, B, X>(ctx, row, m, in_buffer, s);
-      else
-        write_row3<C, B, X>(ctx, row, m, s);
-    }
-    return;
   }
-  if constexpr (S == ShadePath::PerFragment) shade_block(ctx, in, bx, by, mask, shaded_block);
+  if constexpr (S == ShadePath::PerFragment) {
+    mask = shade_block(ctx, in, bx, by, mask, shaded_block);
+    if (mask == 0) return;
+  }
   // One row: the tests, then colour and store for the survivors of `m`. `in_buffer`: the whole
   // row lies inside the buffer (bx + 8 <= width).
   const auto run_row = [&](int j, unsigned m, bool in_buffer) __attribute__((always_inline)) {

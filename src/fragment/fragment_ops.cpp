@@ -125,10 +125,20 @@ void prepare_fragments(const RasterState& rs, const Framebuffer& fb, FragCtx& ct
     ctx.clip_y1 = static_cast<int>(std::min<int64_t>(ctx.clip_y1, y1));
   }
   ctx.needs_color = k.color_path() != ColorPath::None || k.alpha_test;
-  ctx.shade = ctx.needs_color ? rs.shade : nullptr;
+  // A fragment shader that discards decides which fragments reach the depth and stencil
+  // tests even when no colour is written (§3.11.2).
+  const bool kills =
+      rs.shade != nullptr && rs.shade->program != nullptr && rs.shade->program->discards;
+  ctx.shade = ctx.needs_color || kills ? rs.shade : nullptr;
+  ctx.late_depth = kills;
   ctx.needs_depth = k.depth_test;
   ctx.noop = (!ctx.needs_color && !ctx.needs_depth && !k.stencil_test && !k.count_samples) ||
              ctx.clip_x0 > ctx.clip_x1 || ctx.clip_y0 > ctx.clip_y1;
+  // gl_FragCoord.z is the window z: the rasterizers set up the z plane for it.
+  if (ctx.shade != nullptr && ctx.shade->program != nullptr && ctx.shade->program->frag_coord) {
+    ctx.needs_depth = true;
+    if (!(ctx.depth_max > 0.0)) ctx.depth_max = 16777215.0;
+  }
   for (int s = 0; s < kShadePathCount; ++s)
     ctx.fn[s] = select_block_fn(k, static_cast<ShadePath>(s));
 }

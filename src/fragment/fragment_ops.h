@@ -97,6 +97,8 @@ struct FragCtx {
   // Texturing, colour sum and fog per fragment (fragment/shade.h); set when the draw has
   // texturing or fog on and reads colour. Primitives then run ShadePath::PerFragment.
   const ShadeSetup* shade = nullptr;
+  // The fragment shader may discard fragments: the depth test waits for it (§3.11.2).
+  bool late_depth = false;
   // Fragments that passed the stencil and depth tests, counted when key.count_samples
   // (occlusion queries, GL 2.1 §4.1.7); draw_primitives hands the sum to the query.
   mutable uint64_t samples_passed = 0;

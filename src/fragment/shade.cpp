@@ -50,25 +50,6 @@ inline void store4(float* a, int q, f32x4 v) {
   std::memcpy(a + 4 * q, &v, sizeof(v));
 }
 
-// log2 as llvmpipe's level-of-detail computation takes it: exact at powers of two and linear
-// in between (floor(log2 x) + x / 2^floor(log2 x) - 1). Its integer part is the exact one, so
-// nearest-level selection is unaffected; the fraction that weighs two levels (§3.8.10
-// LINEAR_MIPMAP_*) follows llvmpipe's.
-inline float fast_log2(float x) {
-  int e = 0;
-  float m;
-  const uint32_t bits = std::bit_cast<uint32_t>(x);
-  const uint32_t biased = (bits >> 23) & 0xffu;
-  if (biased != 0 && biased != 0xff) {
-    // A normal number: frexp's m and e read straight from the fields (no library call).
-    e = static_cast<int>(biased) - 126;
-    m = std::bit_cast<float>((bits & 0x807fffffu) | (126u << 23));
-  } else {
-    m = std::frexp(x, &e); // x = m 2^e, m in [1/2, 1)
-  }
-  return static_cast<float>(e - 2) + 2.0f * m;
-}
-
 // One combine argument (§3.8.13 Table 3.26/3.27): the operand applied to the source colour.
 inline void operand_rgb(GLenum op, const float* src, float out[3]) {
   switch (op) {
@@ -341,7 +322,7 @@ namespace {
       const float rho2 = std::max(dx[0] * dx[0] + dx[1] * dx[1] + dx[2] * dx[2],
                                   dy[0] * dy[0] + dy[1] * dy[1] + dy[2] * dy[2]);
       // log2(0) is -infinity: plain magnification; keep it finite for the sampler.
-      lam[q] = rho2 > 0.0f ? std::max(0.5f * fast_log2(rho2), -64.0f) : -64.0f;
+      lam[q] = rho2 > 0.0f ? std::max(0.5f * lod_log2(rho2), -64.0f) : -64.0f;
     }
     if (su.view.quads) {
       sample_quads(su.view, nq, s, t, lam, su.bias, tex[k]);
@@ -474,12 +455,17 @@ void shade_block_sse2(const FragCtx& ctx, const FragInputs& in, int bx, int by, 
 
 } // namespace
 
-void shade_block(const FragCtx& ctx, const FragInputs& in, int bx, int by, uint64_t mask,
-                 float (*out)[64]) {
+uint64_t shade_block(const FragCtx& ctx, const FragInputs& in, int bx, int by, uint64_t mask,
+                     float (*out)[64]) {
+  if (ctx.shade->program != nullptr) return shade_program_block(ctx, in, bx, by, mask, out);
 #if defined(__x86_64__)
-  if (use_avx2()) return shade_block_avx2(ctx, in, bx, by, mask, out);
+  if (use_avx2()) {
+    shade_block_avx2(ctx, in, bx, by, mask, out);
+    return mask;
+  }
 #endif
   shade_block_sse2(ctx, in, bx, by, mask, out);
+  return mask;
 }
 
 } // namespace pineda

@@ -11,6 +11,14 @@
 #include "fragment/fragment_ops.h"
 #include "texture/sampler.h"
 
+// The engine's types by name only (fragment/shade_program.cpp includes shader/engine.h): this
+// header reaches files that include Xlib, whose macros collide with the engine's IR names.
+namespace pineda::shader {
+class Executable;
+class TextureSampler;
+struct Prepared;
+} // namespace pineda::shader
+
 namespace pineda {
 
 // How a unit derives rho (§3.8.8) from the coordinate derivatives.
@@ -32,6 +40,25 @@ struct ShadeUnit {
   float rgb_scale = 1.0f, alpha_scale = 1.0f;
 };
 
+// The fragment stage of a GLSL program (GL 2.1 §3.11): the fragment shader runs in place of
+// texturing, colour sum and fog over the 2x2 quads of a block (shader/engine.h). Plain data
+// made by the state layer (state/program_draw.cpp).
+struct FragmentProgram {
+  const shader::Executable* exe = nullptr;
+  const shader::Prepared* prepared = nullptr;
+  shader::TextureSampler* sampler = nullptr;
+  // The interpolated inputs: input component input_comp[i] (shader/io.h FragmentInput) comes
+  // from PVertex::attr[input_attr[i]] (colour slots below kAttrTex0 take the back colours of
+  // back-facing polygons under two-sided colouring, and the provoking vertex's under flat
+  // shading, §2.14.7).
+  int input_count = 0;
+  int16_t input_comp[kMaxAttr] = {};
+  int16_t input_attr[kMaxAttr] = {};
+  bool frag_coord = false;  // reads gl_FragCoord
+  bool point_coord = false; // reads gl_PointCoord
+  bool discards = false;    // may discard: the depth test waits for the shader
+};
+
 // Everything the per-fragment shading reads that is constant over a draw.
 struct ShadeSetup {
   int unit_count = 0; // enabled, complete units, in unit order
@@ -45,6 +72,8 @@ struct ShadeSetup {
   // GL_FOG_HINT = FASTEST (§5.6): the kAttrFog slot holds the factor f computed per vertex
   // (geometry/texcoord.cpp), not the fog coordinate; only read when `fog` is set.
   bool fog_per_vertex = false;
+  // A fragment shader replaces everything above (the fields above are then unused).
+  const FragmentProgram* program = nullptr;
 };
 
 // Interpolation inputs of one primitive for the per-fragment path: perspective-correct planes
@@ -52,6 +81,9 @@ struct ShadeSetup {
 // Trivially constructible: rasterizers declare one on the stack at no cost and fill it only
 // when the draw shades per fragment.
 struct ShadeInputs {
+  // User-provided, so that value-initialization (the binning's emplace_back()) does not zero the
+  // fragment shader planes first: every path writes what its draw reads.
+  ShadeInputs() {} // NOLINT(modernize-use-equals-default)
   PlaneF inv_w;
   PlaneF color_w[4];
   PlaneF color2_w[3];
@@ -60,14 +92,26 @@ struct ShadeInputs {
   // Flat shading, points, or equal vertex colours: the colours are these constants.
   bool const_colors;
   float color[4], color2[3];
+  // A fragment shader's inputs (FragmentProgram::input_comp order), value/w planes, and
+  // whether the primitive is front-facing (gl_FrontFacing, §3.11.2).
+  // (Planes without member initializers: a primitive that does not use them pays nothing.)
+  bool front_facing;
+  struct Plane {
+    float v0, dx, dy;
+  } prog_w[kMaxAttr];
 };
 
 // Colours of the fragments of `mask` in the block at (bx, by): out[c][8 * row + column] for
 // c = R, G, B, A, unclamped-safe floats (the block loop clamps and rounds). Every entry of a
 // row holding a fragment of `mask` is written (entries of no fragment with some defined value); the
-// other rows are left as they are.
-void shade_block(const FragCtx& ctx, const FragInputs& in, int bx, int by, uint64_t mask,
-                 float (*out)[64]);
+// other rows are left as they are. Returns the fragments of `mask` that remain: a fragment
+// shader may discard some (§3.11.2).
+uint64_t shade_block(const FragCtx& ctx, const FragInputs& in, int bx, int by, uint64_t mask,
+                     float (*out)[64]);
+
+// The same through the draw's fragment shader (ctx.shade->program; shade_program.cpp).
+uint64_t shade_program_block(const FragCtx& ctx, const FragInputs& in, int bx, int by,
+                             uint64_t mask, float (*out)[64]);
 
 // Texture environment of one fragment (exposed for tests): previous colour `cp`, primary colour
 // `cf`, every unit's texture colour `tex` (indexed by position in ShadeSetup::unit), the result

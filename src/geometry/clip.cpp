@@ -104,7 +104,8 @@ void init_clip_setup(ClipSetup& cs, const RasterState& rs) {
     cs.gy1 = (kGuardBand - vp.y) * 2.0f / vp.h - 1.0f;
   }
   int n = rs.attr_count;
-  if (rs.two_sided) n = kMaxAttr; // the back colours are swapped in after clipping
+  // The back colours are swapped in after clipping.
+  if (rs.two_sided && n < kAttrBackColor2 + 4) n = kAttrBackColor2 + 4;
   cs.lerp_count = n < 0 ? 0 : (n > kMaxAttr ? kMaxAttr : n);
 }
 

@@ -75,6 +75,25 @@ bool plain_store(const FragCtx& fc) {
 // caller sets the colours.
 void raster_shade_inputs(const ShadeSetup& ss, const RasterPos& rp, ShadeInputs& si) {
   si.inv_w = PlaneF{1.0f, 0.0f, 0.0f};
+  if (ss.program != nullptr) {
+    // A fragment shader (§3.11): the raster position's colours, coordinates and distance for
+    // every fragment; varyings are zero (no vertex shader ran for them).
+    const FragmentProgram& fp = *ss.program;
+    si.front_facing = true;
+    for (int i = 0; i < fp.input_count; ++i) {
+      const int a = fp.input_attr[i];
+      float v = 0.0f;
+      if (a >= kAttrColor && a < kAttrColor + 4)
+        v = rp.color[a - kAttrColor];
+      else if (a >= kAttrColor2 && a < kAttrColor2 + 4)
+        v = rp.color2[a - kAttrColor2];
+      else if (a >= kAttrTex0 && a < kAttrTex0 + 4 * kMaxTexUnits)
+        v = rp.tex[(a - kAttrTex0) / 4][(a - kAttrTex0) % 4];
+      else if (a == kAttrFog)
+        v = rp.distance;
+      si.prog_w[i] = {v, 0.0f, 0.0f};
+    }
+  }
   for (int k = 0; k < ss.unit_count; ++k) {
     const int u = ss.unit[k].index;
     for (int c = 0; c < 4; ++c)

@@ -254,7 +254,7 @@ setup_triangle(const DrawCall& dc, const FragCtx& ctx, const SnappedTri& t, cons
     // Texturing and fog (fragment/shade.h): their planes exist only for the draws that use
     // them.
     ShadeInputs& si = out.shade_inputs();
-    setup_shade_triangle(*ctx.shade, ps, a, b, c, provoking, rs.flat, slot, si);
+    setup_shade_triangle(*ctx.shade, ps, a, b, c, provoking, rs.flat, slot, back_facing, si);
     in.shade = &si;
     shade = ShadePath::PerFragment;
   }

@@ -34,13 +34,42 @@ bool same_colors(const ShadeSetup& ss, const PVertex* const* v, int n, int slot)
   return true;
 }
 
+// A fragment shader's input planes (FragmentProgram): every input perspective-correct; the
+// colours from `color_slot` on (the back colours of a back-facing polygon under two-sided
+// colouring), constant from `provoking` under flat shading (§2.14.7). `plane(slot, p)` makes
+// the value/w plane of an attribute slot.
+template <typename F>
+void program_planes(const FragmentProgram& fp, const PVertex& provoking, bool flat, int color_slot,
+                    ShadeInputs& out, F plane) {
+  for (int i = 0; i < fp.input_count; ++i) {
+    const int at = fp.input_attr[i];
+    PlaneF p;
+    if (at >= kAttrTex0) {
+      plane(at, p);
+    } else if (flat) {
+      const float v = provoking.attr[color_slot + at];
+      p = PlaneF{out.inv_w.v0 * v, out.inv_w.dx * v, out.inv_w.dy * v};
+    } else {
+      plane(color_slot + at, p);
+    }
+    out.prog_w[i] = {p.v0, p.dx, p.dy};
+  }
+}
+
 } // namespace
 
 void setup_shade_triangle(const ShadeSetup& ss, const PlaneSetup& ps, const PVertex& a,
                           const PVertex& b, const PVertex& c, const PVertex& provoking, bool flat,
-                          int color_slot, ShadeInputs& out) {
+                          int color_slot, bool back_facing, ShadeInputs& out) {
   const double wa = a.win[3], wb = b.win[3], wc = c.win[3];
   out.inv_w = plane_f(ps, wa, wb, wc);
+  if (ss.program != nullptr) {
+    out.front_facing = !back_facing;
+    program_planes(*ss.program, provoking, flat, color_slot, out, [&](int slot, PlaneF& p) {
+      p = plane_f(ps, a.attr[slot] * wa, b.attr[slot] * wb, c.attr[slot] * wc);
+    });
+    return;
+  }
   const auto plane = [&](int slot, PlaneF& p) {
     p = plane_f(ps, a.attr[slot] * wa, b.attr[slot] * wb, c.attr[slot] * wc);
   };
@@ -72,6 +101,11 @@ void setup_shade_line(const ShadeSetup& ss, const PVertex& a, const PVertex& b,
   const auto plane = [&](int slot, PlaneF& p) {
     p = line_plane(a.attr[slot] * wa, b.attr[slot] * wb);
   };
+  if (ss.program != nullptr) {
+    out.front_facing = true; // §3.11.2: lines and points are front-facing
+    program_planes(*ss.program, provoking, flat, kAttrColor, out, plane);
+    return;
+  }
   for_each_plane(ss, out, plane);
   const PVertex* v[2] = {&a, &b};
   if (flat || same_colors(ss, v, 2, kAttrColor)) {
@@ -88,6 +122,13 @@ void setup_shade_line(const ShadeSetup& ss, const PVertex& a, const PVertex& b,
 
 void setup_shade_point(const ShadeSetup& ss, const PVertex& p, ShadeInputs& out) {
   out.inv_w = PlaneF{1.0f, 0.0f, 0.0f};
+  if (ss.program != nullptr) {
+    out.front_facing = true;
+    program_planes(*ss.program, p, true, kAttrColor, out, [&](int slot, PlaneF& pl) {
+      pl = PlaneF{p.attr[slot], 0.0f, 0.0f};
+    });
+    return;
+  }
   for_each_plane(ss, out, [&](int slot, PlaneF& pl) { pl = PlaneF{p.attr[slot], 0.0f, 0.0f}; });
   const_colors(ss, p, kAttrColor, out);
 }

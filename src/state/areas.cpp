@@ -33,6 +33,7 @@ const StateArea* const kAreas[] = {
     &kHintArea,          // hints.h: Table 6.32
     &kVertexArrayArea,   // varray.h: Tables 6.6-6.9
     &kAttribStackArea,   // attrib.h: Table 6.34 attribute stacks
+    &kProgramArea,       // program.h: Tables 6.29-6.31 shaders and programs
 };
 
 } // namespace

@@ -31,6 +31,7 @@ inline InputVertex& push_current_vertex(Context* ctx) {
     for (int i = 0; i < 4; ++i)
       v.tex[u][i] = ctx->current.tex[u][i];
   }
+  if (ctx->imm.generic_mask != 0) append_current_generics(ctx);
   return v;
 }
 
@@ -156,6 +157,13 @@ InputVertex& append_current_vertex(Context* ctx) {
   return push_current_vertex(ctx);
 }
 
+void append_current_generics(Context* ctx) {
+  for (uint32_t m = ctx->imm.generic_mask; m != 0; m &= m - 1) {
+    const float* v = ctx->vertex_attrib.value[__builtin_ctz(m)];
+    ctx->imm.generic.insert(ctx->imm.generic.end(), v, v + 4);
+  }
+}
+
 namespace exec {
 
 void GLAPIENTRY Begin(GLenum mode) {
@@ -174,6 +182,10 @@ void GLAPIENTRY Begin(GLenum mode) {
   // GL 2.1 §2.6.3: no command between Begin and End changes what the draw at End reads from
   // the texture coordinates, so the set of units it reads is fixed here.
   ctx->imm.tex_units = input_tex_units(ctx);
+  // §2.7: each vertex takes the generic attributes' current values, as the other attributes.
+  const LinkedProgram* program = active_program(ctx);
+  ctx->imm.generic_mask = program != nullptr ? program->generic_inputs & ~1u : 0;
+  ctx->imm.generic.clear();
 }
 
 void GLAPIENTRY End() {
@@ -187,8 +199,9 @@ void GLAPIENTRY End() {
   ctx->imm.mode = kOutsideBeginEnd;
   if (!ctx->imm.verts.empty())
     draw_vertices(ctx, mode, ctx->imm.verts.data(), ctx->imm.verts.size(), nullptr,
-                  ctx->imm.verts.size());
+                  ctx->imm.verts.size(), {ctx->imm.generic.data(), ctx->imm.generic_mask});
   ctx->imm.verts.clear();
+  ctx->imm.generic.clear();
   ctx->imm.material_changes.clear(); // Material calls of this primitive have been applied
 }
 

@@ -108,6 +108,8 @@ void GLAPIENTRY DeleteBuffers(GLsizei n, const GLuint* buffers) {
     for (ClientArray* arr : {&a.vertex, &a.color, &a.normal, &a.edgeflag, &a.texcoord[0],
                              &a.texcoord[1], &a.texcoord[2], &a.texcoord[3], &a.secondary, &a.fog})
       if (arr->buffer == name) arr->buffer = 0;
+    for (GenericArray& g : ctx->attrib_arrays.array)
+      if (g.buffer == name) g.buffer = 0;
   }
 }
 

@@ -5,6 +5,7 @@
 #include <cstdlib>
 
 #include "state/api_util.h"
+#include "state/program_draw.h"
 #include "dispatch.h"
 
 namespace pineda {
@@ -26,6 +27,7 @@ Context::Context() : Context(std::make_shared<SharedObjects>()) {}
 Context::Context(std::shared_ptr<SharedObjects> objects)
     : shared(std::move(objects)), buffers(shared->buffers) {
   imm.verts.reserve(1024);
+  program_draw = std::make_unique<ProgramDerived>();
   // What the draw home reads of the derived state and where it draws (draw/draw.h).
   DrawSources& src = draw.src;
   src.raster = &raster;
@@ -39,7 +41,9 @@ Context::Context(std::shared_ptr<SharedObjects> objects)
   src.samples_passed = &queries.samples_passed;
 }
 
-Context::~Context() = default;
+Context::~Context() {
+  release_program(this); // §2.15.2: a program waiting for deletion may go with its last user
+}
 
 Context* current_context() {
   return t_current;

@@ -30,6 +30,7 @@
 #include "state/lighting.h"
 #include "state/multisample.h"
 #include "state/pixel.h"
+#include "state/program.h"
 #include "state/rasterization.h"
 #include "state/select.h"
 #include "state/texenv.h"
@@ -54,6 +55,7 @@ enum DirtyBit : uint32_t {
       1u << 8,           // line width/stipple/smooth, point size/parameters, polygon offset/stipple
   kDirtyPixel = 1u << 9, // pixel transfer, pixel maps, pixel zoom
   kDirtyRenderMode = 1u << 10, // glRenderMode, feedback/selection buffers, active queries
+  kDirtyProgram = 1u << 11,    // the current program, its link, the vertex shader enables
   kDirtyLighting = 1u << 16,   // lighting state, or normalize / rescale-normal enables
   kDirtyAll = 0xffffffffu,
 };
@@ -74,6 +76,7 @@ struct SharedObjects {
   // framebuffers derived from attached images (framebuffer_object.h) know when to be remade.
   uint64_t texture_generation = 0;
   DisplayLists lists; // src/state/dlist.cpp
+  GlslObjects glsl;   // shader and program objects (src/state/shader_object.cpp)
 };
 
 // The colour buffers of GL 2.1 table 4.4 (no auxiliary buffers exist: GL_AUX_BUFFERS is 0).
@@ -136,6 +139,9 @@ struct Context {
   // Client groups (glPushClientAttrib).
   PixelStoreGroup pixel_store; // Table 6.23, pixel.h
   VertexArrayGroup arrays;     // Tables 6.6-6.9, varray.h
+  // Generic vertex attributes (program.h): current values (CURRENT_BIT) and arrays (client).
+  VertexAttribCurrentGroup vertex_attrib;
+  VertexAttribArrayGroup attrib_arrays;
 
   // ---- state no attribute group saves ----
   BeginEndState imm; // the primitive between Begin and End (§2.6), current.h
@@ -149,6 +155,7 @@ struct Context {
   RenderModeState render_mode; // Table 6.31 selection and feedback, select.h
   QueryState queries;          // occlusion queries (§4.1.7), select.h
   DisplayListState dlist;      // lists being compiled or executed (§5.4), dlist_state.h
+  ProgramState program;        // the current program (§2.15.2), program.h
   std::shared_ptr<SharedObjects> shared;
   std::unordered_map<GLuint, std::unique_ptr<BufferObject>>& buffers; // shared->buffers
   std::vector<AttribFrame> attrib_stack;                              // glPushAttrib (attrib.cpp)
@@ -164,6 +171,7 @@ struct Context {
   glm::mat4 modelview_matrix{1.0f}; // the model-view stack's top, where the draws read it
   LightSetup light_setup;           // the lighting area's (lighting.cpp)
   TexPipeDerived texpipe;           // the texture area's (validate_texpipe.cpp)
+  std::unique_ptr<ProgramDerived> program_draw; // the program area's (program_draw.h)
 
   // What the draw home keeps across draws (draw/draw.h): the draw cache, processed vertices.
   DrawContext draw;
@@ -171,6 +179,7 @@ struct Context {
   // Scratch space reused across draws so the hot path does not allocate.
   std::vector<InputVertex> fetch_scratch;
   std::vector<uint32_t> index_scratch;
+  std::vector<float> generic_scratch; // generic attributes of an array draw (vertex_attrib.cpp)
 
   // Worker threads sharing large draws and clears (src/raster/workers.h), started on first use.
   RasterWorkers workers;

@@ -46,6 +46,10 @@ struct BeginEndState {
   // since, applied per vertex by the draw that End issues.
   Material begin_material[2];
   std::vector<MaterialChange> material_changes;
+  // The generic attributes the current vertex shader reads (set by glBegin; GL 2.1 §2.7): four
+  // floats each per vertex, the current values when the vertex was specified.
+  uint32_t generic_mask = 0;
+  std::vector<float> generic;
 };
 
 // Appends to the primitive between Begin and End a vertex with the current attributes
@@ -53,6 +57,10 @@ struct BeginEndState {
 // the units in BeginEndState::tex_units) and returns it; the caller sets its position
 // (glVertex and the evaluators).
 InputVertex& append_current_vertex(Context* ctx);
+
+// Appends the current values of the generic attributes of BeginEndState::generic_mask for a
+// vertex appended to the primitive (push_current_vertex does it; glArrayElement too).
+void append_current_generics(Context* ctx);
 
 extern const StateArea kCurrentArea; // begin_end.cpp
 

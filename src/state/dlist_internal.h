@@ -72,6 +72,14 @@ inline void mark_rect_block(Context* ctx) {
 // Appends a compiled array draw; attributes of disabled arrays inherit what the list knows.
 void compile_array_block(Context* ctx, GLenum mode, std::vector<InputVertex>&& verts,
                          std::vector<uint32_t>&& indices);
+// The attributes of the enabled conventional arrays of one array element, compiled as the
+// commands ArrayElement stands for (§2.8), without the vertex.
+void compile_array_attribs(Context* ctx, const InputVertex& v);
+// Array elements while generic arrays are enabled (dlist_save_program.cpp): each compiled as
+// ArrayElement, the generic attributes as VertexAttrib calls, generic array 0 as the vertex.
+void compile_generic_elements(Context* ctx, const uint32_t* elements, size_t count);
+// A whole array draw of those elements: Begin, the elements, End.
+void compile_generic_draw(Context* ctx, GLenum mode, const uint32_t* elements, size_t count);
 // After a command whose effect on the current attributes is unknown at compile time.
 inline void forget_attribs(Context* ctx) {
   ctx->dlist.known = 0;

@@ -130,6 +130,12 @@ bool arrays_mapped(Context* ctx, bool with_elements) {
 // A draw that yields no vertex (no vertex array, nothing in range) still compiles an empty
 // array block: executed between Begin and End it is INVALID_OPERATION all the same (§2.6.3).
 void compile_range(Context* ctx, GLenum mode, size_t first, size_t count) {
+  if (enabled_generic_arrays(ctx) != 0 || generic_array0_enabled(ctx)) {
+    std::vector<uint32_t> elements(count);
+    for (size_t k = 0; k < count; ++k)
+      elements[k] = static_cast<uint32_t>(first + k);
+    return compile_generic_draw(ctx, mode, elements.data(), count);
+  }
   std::vector<InputVertex> verts;
   if (count != 0 && ctx->arrays.vertex.enabled && arrays_hold(ctx, first + count - 1)) {
     verts.resize(count);
@@ -175,6 +181,13 @@ bool read_indices(Context* ctx, GLsizei count, GLenum type, const void* indices,
 // As compile_range, a draw that yields no vertex compiles an empty array block.
 void compile_elements(Context* ctx, GLenum mode, GLsizei count, GLenum type, const void* indices) {
   std::vector<uint32_t> idx;
+  if (enabled_generic_arrays(ctx) != 0 || generic_array0_enabled(ctx)) {
+    if (count > 0 && read_indices(ctx, count, type, indices, idx))
+      compile_generic_draw(ctx, mode, idx.data(), idx.size());
+    else
+      compile_array_block(ctx, mode, {}, {});
+    return;
+  }
   if (count == 0 || !ctx->arrays.vertex.enabled || !read_indices(ctx, count, type, indices, idx))
     return compile_array_block(ctx, mode, {}, {});
   const auto [lo_it, hi_it] = std::minmax_element(idx.begin(), idx.end());
@@ -340,6 +353,20 @@ void replay_pop_attrib(const void*) {
 }
 
 } // namespace
+
+void compile_array_attribs(Context* ctx, const InputVertex& v) {
+  const VertexArrayGroup& a = ctx->arrays;
+  if (a.color.enabled) compile_attrib(ctx, kListColor, v.color);
+  if (a.secondary.enabled) compile_attrib(ctx, kListColor2, v.color2);
+  if (a.normal.enabled) compile_attrib(ctx, kListNormal, v.normal);
+  for (int u = 0; u < kMaxTexUnits; ++u)
+    if (a.texcoord[u].enabled) compile_attrib(ctx, list_tex_bit(u), v.tex[u]);
+  if (a.fog.enabled) compile_attrib(ctx, kListFog, &v.fog);
+  if (a.edgeflag.enabled) {
+    const float edge = v.edge != 0 ? 1.0f : 0.0f;
+    compile_attrib(ctx, kListEdge, &edge);
+  }
+}
 
 namespace saver {
 
@@ -552,19 +579,12 @@ void GLAPIENTRY ArrayElement(GLint i) {
     InputVertex v;
     if (i < 0) {
       record_error_at_execution(ctx, GL_INVALID_VALUE, "glArrayElement");
+    } else if (enabled_generic_arrays(ctx) != 0 || generic_array0_enabled(ctx)) {
+      const uint32_t element = static_cast<uint32_t>(i);
+      compile_generic_elements(ctx, &element, 1);
     } else if (fetch_range(ctx, static_cast<size_t>(i), 1, &v)) {
-      const VertexArrayGroup& a = ctx->arrays;
-      if (a.color.enabled) compile_attrib(ctx, kListColor, v.color);
-      if (a.secondary.enabled) compile_attrib(ctx, kListColor2, v.color2);
-      if (a.normal.enabled) compile_attrib(ctx, kListNormal, v.normal);
-      for (int u = 0; u < kMaxTexUnits; ++u)
-        if (a.texcoord[u].enabled) compile_attrib(ctx, list_tex_bit(u), v.tex[u]);
-      if (a.fog.enabled) compile_attrib(ctx, kListFog, &v.fog);
-      if (a.edgeflag.enabled) {
-        const float edge = v.edge != 0 ? 1.0f : 0.0f;
-        compile_attrib(ctx, kListEdge, &edge);
-      }
-      if (a.vertex.enabled) compile_vertex(ctx, v.pos[0], v.pos[1], v.pos[2], v.pos[3]);
+      compile_array_attribs(ctx, v);
+      if (ctx->arrays.vertex.enabled) compile_vertex(ctx, v.pos[0], v.pos[1], v.pos[2], v.pos[3]);
     }
   }
   if (executes(ctx)) exec::ArrayElement(i);

@@ -1,27 +1,58 @@
 // The state layer's draws handed to the draw home (draw_call.h).
 #include "state/draw_call.h"
 
+#include <algorithm>
+#include <bit>
+
 #include "draw/draw.h"
+#include "state/program_draw.h"
 #include "state/validate.h"
 
 namespace pineda {
 
 uint32_t input_tex_units(Context* ctx) {
+  check_program_link(ctx);
   validate_state(ctx);
   const TexVertexSetup& tvs = ctx->texpipe.vertex;
   // As the draw home decides which units the geometry stage reads (draw/draw.cpp).
   uint32_t units = ctx->raster.shade != nullptr ? tvs.units : 0;
+  // A vertex shader reads the coordinates its gl_MultiTexCoord inputs name.
+  if (ctx->program_draw->has_vertex) units = ctx->program_draw->vs_tex_units;
   // Feedback of the COLOR_TEXTURE types reports unit 0's coordinates (GL 2.1 §5.3).
   if (!render_mode_is_render(ctx)) units |= 1u;
   return units;
 }
 
+namespace {
+
+// The vertex shader's view of the draw's generic attributes (geometry/vertex_program.h).
+const VertexProgram* vertex_program(Context* ctx, GenericVertices generic) {
+  refresh_program(ctx);
+  ProgramDerived& d = *ctx->program_draw;
+  if (!d.has_vertex) return nullptr;
+  VertexProgram& vp = d.vertex;
+  vp.generic = generic.data;
+  vp.generic_stride = 4 * std::popcount(generic.mask);
+  int column = 0;
+  for (int i = 0; i < kMaxVertexAttribs; ++i) {
+    const bool given = generic.data != nullptr && (generic.mask & (1u << i)) != 0;
+    vp.generic_column[i] = static_cast<int8_t>(given ? column : -1);
+    if (given) column += 4;
+    std::copy(ctx->vertex_attrib.value[i], ctx->vertex_attrib.value[i] + 4, vp.generic_current[i]);
+  }
+  return &vp;
+}
+
+} // namespace
+
 void draw_vertices(Context* ctx, GLenum mode, const InputVertex* verts, size_t n,
-                   const uint32_t* indices, size_t count) {
+                   const uint32_t* indices, size_t count, GenericVertices generic) {
   // ARB_framebuffer_object §4.4.4: nothing is drawn into an incomplete framebuffer.
   if (!draw_framebuffer_ready(ctx, "glDraw") || !ctx->fb.present() || n == 0) return;
+  check_program_link(ctx);
   validate_state(ctx);
   DrawInput in;
+  if (ctx->program_draw->linked != nullptr) in.vertex_program = vertex_program(ctx, generic);
   in.mode = mode;
   in.in = verts;
   in.n = n;

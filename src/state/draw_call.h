@@ -19,7 +19,9 @@ uint32_t input_tex_units(Context* ctx);
 // Transforms `n` vertices and draws them in `mode` (into the draw buffers, or in SELECT and
 // FEEDBACK mode into the selection or feedback buffer); indices (optional) select `count` of
 // them.
+// `generic`: the generic vertex attributes of the vertices, where they do not take their
+// current values (program.h).
 void draw_vertices(Context* ctx, GLenum mode, const InputVertex* verts, size_t n,
-                   const uint32_t* indices, size_t count);
+                   const uint32_t* indices, size_t count, GenericVertices generic = {});
 
 } // namespace pineda

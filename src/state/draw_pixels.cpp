@@ -11,6 +11,7 @@
 #include "dispatch.h"
 #include "framebuffer/read_pixels.h"
 #include "state/draw_call.h"
+#include "state/program_draw.h"
 #include "state/validate.h"
 #include "pixel/pixel_draw.h"
 #include "pixel/unpack.h"
@@ -22,6 +23,14 @@
 namespace pineda {
 
 namespace {
+
+// Validation before pixel fragments are drawn: a fragment shader shades them too (§3.11), so
+// its uniforms and built-in state are brought up to date as for a draw.
+void validate_pixel_draw(Context* ctx) {
+  check_program_link(ctx);
+  validate_state(ctx);
+  if (ctx->program_draw->has_fragment) refresh_program(ctx);
+}
 
 // Groups converted per step, so that huge images do not need a float copy of themselves.
 constexpr size_t kStripGroups = size_t{1} << 16;
@@ -218,7 +227,7 @@ void GLAPIENTRY DrawPixels(GLsizei width, GLsizei height, GLenum format, GLenum 
                      pixel_type_unit(type), "glDrawPixels", &pixels))
     return;
   if (pixels == nullptr || !ctx->fb.present()) return;
-  validate_state(ctx);
+  validate_pixel_draw(ctx);
   const PixelTransferView xfer = pixel_transfer_view(ctx);
   const PixelPlacement p = placement_at(ctx, width, height);
   // Each strip unpacks `rows` rows starting at row `m` of the client image.
@@ -290,7 +299,7 @@ void GLAPIENTRY Bitmap(GLsizei width, GLsizei height, GLfloat xorig, GLfloat yor
   if (!render_mode_is_render(ctx)) {
     raster_token(ctx, GL_BITMAP_TOKEN); // §5.3; the raster position still moves
   } else if (bitmap != nullptr && width > 0 && height > 0 && ctx->fb.present()) {
-    validate_state(ctx);
+    validate_pixel_draw(ctx);
     // Unpacked like DrawPixels of COLOR_INDEX / BITMAP, before any conversion (§3.7).
     const size_t n = static_cast<size_t>(width) * static_cast<size_t>(height);
     std::vector<uint32_t> idx(n);
@@ -356,7 +365,7 @@ void GLAPIENTRY CopyPixels(GLint x, GLint y, GLsizei width, GLsizei height, GLen
   // them, so only the part inside is read and drawn, at its place in the full rectangle.
   const Inside in = inside_fb(src, x, y, width, height);
   if (in.empty()) return;
-  validate_state(ctx);
+  validate_pixel_draw(ctx);
   const int iw = in.x1 - in.x0, ih = in.y1 - in.y0;
   PixelPlacement p = placement_at(ctx, iw, ih);
   p.col0 = int64_t{in.x0} - x;

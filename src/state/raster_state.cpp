@@ -5,6 +5,7 @@
 #include <glm/matrix.hpp>
 
 #include "state/context.h"
+#include "state/program_draw.h"
 #include "state/validate.h"
 
 namespace pineda {
@@ -121,17 +122,38 @@ void derive_raster_state(Context& ctx, uint32_t dirty) {
     rs.logic_op = cb.color_logic_op;
     rs.logic_op_mode = cb.logic_op;
   }
-  // §2.14.1: back colours are computed and selected only with two-sided lighting on.
-  if (dirty & (kDirtyLighting | kDirtyTransform))
-    rs.two_sided = ctx.lighting.enabled && ctx.lighting.two_side;
+  // §2.14.1: back colours are computed and selected only with two-sided lighting on; with a
+  // vertex shader, under VERTEX_PROGRAM_TWO_SIDE (§2.20.3).
+  const ProgramDerived& program = *ctx.program_draw;
+  if (dirty & (kDirtyLighting | kDirtyTransform | kDirtyProgram))
+    rs.two_sided =
+        program.has_vertex ? ctx.program.two_side : ctx.lighting.enabled && ctx.lighting.two_side;
   // An active occlusion query makes the fragment stage count (GL 2.1 §4.1.7, query.cpp).
   if (dirty & kDirtyRenderMode) rs.count_samples = ctx.queries.active != 0;
   // The offset's depth step depends on the framebuffer's depth bits.
-  if (dirty & (kDirtyRasterMode | kDirtyFramebuffer)) derive_raster_modes(ctx, rs.modes);
+  if (dirty & (kDirtyRasterMode | kDirtyFramebuffer | kDirtyProgram)) {
+    derive_raster_modes(ctx, rs.modes);
+    // §3.3: with a vertex shader the size is gl_PointSize per vertex under
+    // VERTEX_PROGRAM_POINT_SIZE (the vertex stage clamps it), else POINT_SIZE without
+    // distance attenuation.
+    if (program.has_vertex) {
+      RasterModes& m = rs.modes;
+      m.point_attenuated = ctx.program.point_size;
+      if (!m.point_attenuated)
+        m.point_size =
+            std::min(std::max(std::min(ctx.point.size, ctx.point.size_max), ctx.point.size_min),
+                     kMaxPointSize);
+    }
+  }
   // Texturing and fog (the texture area's setups, validate_texpipe.cpp): per-fragment shading
   // and the live attribute count.
   rs.shade = ctx.texpipe.shading ? ctx.texpipe.shade.get() : nullptr;
   rs.attr_count = ctx.texpipe.attr_count;
+  // A fragment shader replaces texturing, colour sum and fog (GL 2.1 §3.11).
+  if (program.has_fragment) {
+    rs.shade = program.shade.get();
+    rs.attr_count = program.attr_count;
+  }
 }
 
 } // namespace pineda

@@ -403,7 +403,7 @@ const StateArea kTextureEnvArea = {
     .capabilities = kTextureEnvCaps,
     .get = get_texenv,
     .groups = kTextureEnvGroups,
-    .derive_on = kDirtyTexture | kDirtyFog | kDirtyLighting | kDirtyTransform,
+    .derive_on = kDirtyTexture | kDirtyFog | kDirtyLighting | kDirtyTransform | kDirtyProgram,
     .derive = validate_texpipe,
     .stale = texture_stale,
 };

@@ -158,13 +158,23 @@ void validate_texpipe(Context& context, uint32_t) {
   // fixed-function vertex program (ffvertex_prog.c build_fog) outputs only the coordinate and
   // the fragment shader evaluates f (st_nir_lower_fog). DONT_CARE follows llvmpipe, FASTEST
   // the classic path.
-  ss.fog_per_vertex = fog.enabled && ctx->hint.fog == GL_FASTEST;
+  // A GLSL program gives the fog coordinate, never the factor (§3.10: with a vertex shader c
+  // is the interpolated gl_FogFragCoord; a fragment shader reads the coordinate).
+  const bool program = active_program(ctx) != nullptr;
+  ss.fog_per_vertex = fog.enabled && ctx->hint.fog == GL_FASTEST && !program;
   const LightingGroup& ls = ctx->lighting;
   // §3.9: with lighting the sum applies when the specular colour is separate; otherwise
   // COLOR_SUM decides.
-  ss.color_sum = ls.enabled ? ctx->light_setup.separate_specular : ctx->fog.color_sum;
+  // With a vertex shader COLOR_SUM alone decides (§3.9).
+  const bool vertex_shader = program && active_program(ctx)->has_vertex;
+  ss.color_sum =
+      ls.enabled && !vertex_shader ? ctx->light_setup.separate_specular : ctx->fog.color_sum;
   tp.shading = ss.unit_count != 0 || ss.fog;
-  setup_vertex(ctx, units, ss.fog, tp.vertex);
+  // A fragment shader after the fixed-function vertex stage reads the coordinates of the units
+  // it names (texturing on or not) and the fog coordinate (GL 2.1 §3.11.2).
+  bool program_fog = false;
+  const uint32_t program_units = fixed_vertex_program_inputs(*ctx, &program_fog);
+  setup_vertex(ctx, units | program_units, ss.fog || program_fog, tp.vertex);
   TexVertexSetup& vs = tp.vertex;
   vs.fog_per_vertex = ss.fog_per_vertex;
   vs.fog_mode = fog.mode;

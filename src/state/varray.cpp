@@ -2,6 +2,7 @@
 // glInterleavedArrays; and the vertex-array area (Tables 6.6-6.9, varray.h): client
 // capabilities, queries, pointers and the client vertex-array group.
 #include <algorithm>
+#include <bit>
 #include <cstdint>
 #include <cstring>
 
@@ -52,17 +53,58 @@ bool arrays_mapped(Context* ctx, bool with_elements) {
       (a.edgeflag.enabled && mapped(a.edgeflag.buffer)) ||
       (a.secondary.enabled && mapped(a.secondary.buffer)))
     return true;
+  for (const GenericArray& g : ctx->attrib_arrays.array)
+    if (g.enabled && mapped(g.buffer)) return true;
   return with_elements && mapped(ctx->arrays.element_array_buffer);
+}
+
+// GL 2.1 §2.8: a draw needs the vertex array or generic array 0, which takes its place.
+bool has_vertex_array(const Context* ctx) {
+  return ctx->arrays.vertex.enabled || generic_array0_enabled(ctx);
+}
+
+// The generic arrays of a draw: the enabled ones the vertex shader reads.
+uint32_t generic_draw_mask(const Context* ctx) {
+  const LinkedProgram* program = active_program(ctx);
+  if (program == nullptr || !program->has_vertex) return 0;
+  return program->generic_inputs & enabled_generic_arrays(ctx);
+}
+
+// After the conventional arrays were fetched into verts[0..n) for elements el: the positions
+// of generic array 0 when it is enabled, and the generic arrays of the draw into
+// ctx->generic_scratch. False when an array would be read outside its buffer.
+template <typename Fetch>
+bool fetch_generics(Context* ctx, InputVertex* verts, size_t n, Fetch fetch, GenericVertices& out) {
+  if (generic_array0_enabled(ctx)) {
+    std::vector<float> pos(4 * n);
+    if (!fetch(1u, pos.data())) return false;
+    for (size_t k = 0; k < n; ++k)
+      std::copy(&pos[4 * k], &pos[4 * k] + 4, verts[k].pos);
+  }
+  const uint32_t mask = generic_draw_mask(ctx);
+  if (mask == 0) return true;
+  ctx->generic_scratch.resize(4 * static_cast<size_t>(std::popcount(mask)) * n);
+  if (!fetch(mask, ctx->generic_scratch.data())) return false;
+  out = {ctx->generic_scratch.data(), mask};
+  return true;
 }
 
 // Draw elements [first, first+count) of the enabled arrays.
 void draw_range(Context* ctx, GLenum mode, size_t first, size_t count) {
   // GL 2.1 §2.8: without the vertex array enabled nothing is drawn.
-  if (count == 0 || !ctx->arrays.vertex.enabled) return;
+  if (count == 0 || !has_vertex_array(ctx)) return;
   if (!arrays_hold(ctx, first + count - 1)) return;
   ctx->fetch_scratch.resize(count);
   if (!fetch_range(ctx, first, count, ctx->fetch_scratch.data(), input_tex_units(ctx))) return;
-  draw_vertices(ctx, mode, ctx->fetch_scratch.data(), count, nullptr, count);
+  GenericVertices generic;
+  if (!fetch_generics(
+          ctx, ctx->fetch_scratch.data(), count,
+          [&](uint32_t mask, float* out) {
+            return fetch_generic_range(ctx, mask, first, count, out);
+          },
+          generic))
+    return;
+  draw_vertices(ctx, mode, ctx->fetch_scratch.data(), count, nullptr, count, generic);
 }
 
 // Read `count` indices of `type` at `indices` (a buffer offset when an element buffer is
@@ -103,7 +145,7 @@ bool read_indices(Context* ctx, GLsizei count, GLenum type, const void* indices)
 // Fetch the index range [lo, hi] once and rebase the indices, unless the range is much wider
 // than the draw, in which case each index is fetched on its own.
 void draw_indexed(Context* ctx, GLenum mode, GLsizei count, GLenum type, const void* indices) {
-  if (count == 0 || !ctx->arrays.vertex.enabled) return;
+  if (count == 0 || !has_vertex_array(ctx)) return;
   if (!read_indices(ctx, count, type, indices)) return;
   std::vector<uint32_t>& idx = ctx->index_scratch;
   const auto [lo_it, hi_it] = std::minmax_element(idx.begin(), idx.end());
@@ -113,14 +155,30 @@ void draw_indexed(Context* ctx, GLenum mode, GLsizei count, GLenum type, const v
   if (span <= 4 * static_cast<size_t>(count) + 1024) {
     ctx->fetch_scratch.resize(span);
     if (!fetch_range(ctx, lo, span, ctx->fetch_scratch.data(), input_tex_units(ctx))) return;
+    GenericVertices generic;
+    if (!fetch_generics(
+            ctx, ctx->fetch_scratch.data(), span,
+            [&](uint32_t mask, float* out) {
+              return fetch_generic_range(ctx, mask, lo, span, out);
+            },
+            generic))
+      return;
     for (uint32_t& i : idx)
       i -= lo;
-    draw_vertices(ctx, mode, ctx->fetch_scratch.data(), span, idx.data(), idx.size());
+    draw_vertices(ctx, mode, ctx->fetch_scratch.data(), span, idx.data(), idx.size(), generic);
   } else {
     ctx->fetch_scratch.resize(idx.size());
     if (!fetch_list(ctx, idx.data(), idx.size(), ctx->fetch_scratch.data(), input_tex_units(ctx)))
       return;
-    draw_vertices(ctx, mode, ctx->fetch_scratch.data(), idx.size(), nullptr, idx.size());
+    GenericVertices generic;
+    if (!fetch_generics(
+            ctx, ctx->fetch_scratch.data(), idx.size(),
+            [&](uint32_t mask, float* out) {
+              return fetch_generic_list(ctx, mask, idx.data(), idx.size(), out);
+            },
+            generic))
+      return;
+    draw_vertices(ctx, mode, ctx->fetch_scratch.data(), idx.size(), nullptr, idx.size(), generic);
   }
 }
 
@@ -411,7 +469,24 @@ void GLAPIENTRY ArrayElement(GLint i) {
     if (a.texcoord[u].enabled) std::copy(v.tex[u], v.tex[u] + 4, ctx->current.tex[u]);
   if (a.fog.enabled) ctx->current.fog_coord = v.fog;
   if (a.edgeflag.enabled) ctx->current.edge = v.edge != 0;
-  if (a.vertex.enabled && ctx->imm.mode != kOutsideBeginEnd) ctx->imm.verts.push_back(v);
+  // The generic arrays act as VertexAttrib (§2.8), attribute 0 (the vertex) last.
+  const uint32_t generic = enabled_generic_arrays(ctx);
+  if (generic != 0) {
+    float values[4 * kMaxVertexAttribs];
+    if (!fetch_generic_range(ctx, generic, static_cast<size_t>(i), 1, values)) return;
+    int k = 0;
+    for (uint32_t m = generic; m != 0; m &= m - 1, ++k)
+      std::copy(values + 4 * k, values + 4 * k + 4, ctx->vertex_attrib.value[std::countr_zero(m)]);
+  }
+  bool vertex = a.vertex.enabled;
+  if (generic_array0_enabled(ctx)) {
+    if (!fetch_generic_range(ctx, 1u, static_cast<size_t>(i), 1, v.pos)) return;
+    vertex = true;
+  }
+  if (vertex && ctx->imm.mode != kOutsideBeginEnd) {
+    ctx->imm.verts.push_back(v);
+    if (ctx->imm.generic_mask != 0) append_current_generics(ctx);
+  }
 }
 
 void GLAPIENTRY DrawArrays(GLenum mode, GLint first, GLsizei count) {

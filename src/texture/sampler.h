@@ -7,7 +7,10 @@
 
 #include <GL/gl.h>
 
+#include <bit>
+#include <cmath>
 #include <cstdint>
+
 #include "core/limits.h"
 
 namespace pineda {
@@ -17,6 +20,25 @@ namespace pineda {
 enum class TexBase : uint8_t { Alpha, Luminance, LuminanceAlpha, Intensity, RGB, RGBA };
 
 constexpr int kMaxSampleBatch = 64;
+
+// log2 as llvmpipe's level-of-detail computation takes it: exact at powers of two and linear
+// in between (floor(log2 x) + x / 2^floor(log2 x) - 1). Its integer part is the exact one, so
+// nearest-level selection is unaffected; the fraction that weighs two levels (§3.8.10
+// LINEAR_MIPMAP_*) follows llvmpipe's.
+inline float lod_log2(float x) {
+  int e = 0;
+  float m;
+  const uint32_t bits = std::bit_cast<uint32_t>(x);
+  const uint32_t biased = (bits >> 23) & 0xffu;
+  if (biased != 0 && biased != 0xff) {
+    // A normal number: frexp's m and e read straight from the fields (no library call).
+    e = static_cast<int>(biased) - 126;
+    m = std::bit_cast<float>((bits & 0x807fffffu) | (126u << 23));
+  } else {
+    m = std::frexp(x, &e); // x = m 2^e, m in [1/2, 1)
+  }
+  return static_cast<float>(e - 2) + 2.0f * m;
+}
 
 // The dimensionality of a texture target: 1 for TEXTURE_1D, 3 for TEXTURE_3D, else 2 (2D and
 // cube maps, whose faces are 2D images).
