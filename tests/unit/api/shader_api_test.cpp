@@ -514,6 +514,35 @@ TEST_F(ShaderTest, BuiltInMatricesAndFixedVertexStage) {
   EXPECT_EQ(err(), static_cast<GLenum>(GL_NO_ERROR));
 }
 
+TEST_F(ShaderTest, RasterPositionThroughTheVertexShader) {
+  // §2.13: with a vertex shader the raster position and its data are the shader's outputs.
+  glUseProgram(program("void main() { gl_Position = gl_Vertex + vec4(0.5, 0.0, 0.0, 0.0);\n"
+                       "  gl_FrontColor = vec4(0.0, 0.0, 1.0, 1.0);\n"
+                       "  gl_TexCoord[1] = vec4(0.25);\n"
+                       "  gl_FogFragCoord = 3.0; }\n",
+                       nullptr));
+  glRasterPos2f(-1.0f, -1.0f);
+  GLfloat pos[4] = {}, color[4] = {}, tex[4] = {}, dist = 0, valid = 0;
+  glGetFloatv(GL_CURRENT_RASTER_POSITION, pos);
+  glGetFloatv(GL_CURRENT_RASTER_COLOR, color);
+  glGetFloatv(GL_CURRENT_RASTER_DISTANCE, &dist);
+  glGetFloatv(GL_CURRENT_RASTER_POSITION_VALID, &valid);
+  EXPECT_EQ(valid, 1.0f);
+  EXPECT_EQ(pos[0], 0.25f * kW);
+  EXPECT_EQ(pos[1], 0.0f);
+  EXPECT_EQ(color[2], 1.0f);
+  EXPECT_EQ(color[0], 0.0f);
+  EXPECT_EQ(dist, 3.0f);
+  glActiveTexture(GL_TEXTURE1);
+  glGetFloatv(GL_CURRENT_RASTER_TEXTURE_COORDS, tex);
+  glActiveTexture(GL_TEXTURE0);
+  EXPECT_EQ(tex[3], 0.25f);
+  glRasterPos2f(0.8f, 0.0f); // outside once moved by the shader
+  glGetFloatv(GL_CURRENT_RASTER_POSITION_VALID, &valid);
+  EXPECT_EQ(valid, 0.0f);
+  EXPECT_EQ(err(), static_cast<GLenum>(GL_NO_ERROR));
+}
+
 TEST_F(ShaderTest, LargeDrawSharedAmongWorkerThreads) {
   // Enough vertices that the vertex shader runs on every worker thread (draw/draw.cpp), each
   // with its own scratch registers, and the generic attribute rows follow each thread's range.
