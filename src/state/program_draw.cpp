@@ -11,6 +11,7 @@
 #include <glm/gtc/matrix_transform.hpp>
 #include <glm/matrix.hpp>
 
+#include "geometry/clip.h"
 #include "shader/engine.h"
 #include "state/program_draw.h"
 #include "state/context.h"
@@ -471,6 +472,59 @@ void derive_program(Context& ctx, uint32_t) {
     v.point_size_min = ctx.point.size_min;
     v.point_size_max = std::min(ctx.point.size_max, kMaxPointSize);
   }
+}
+
+bool program_raster_pos(Context* ctx, const float obj[4], RasterPos& rp) {
+  refresh_program(ctx);
+  const ProgramDerived& d = *ctx->program_draw;
+  // The vertex stage of the draws, with every output kept and the current generic values.
+  VertexProgram vp = d.vertex;
+  vp.generic = nullptr;
+  for (int i = 0; i < shader::kMaxVertexAttribs; ++i) {
+    vp.generic_column[i] = -1;
+    std::copy(ctx->vertex_attrib.value[i], ctx->vertex_attrib.value[i] + 4, vp.generic_current[i]);
+  }
+  for (int c = 0; c < kNumVertexOutputs * 4; ++c)
+    vp.out_attr[c] = static_cast<int16_t>(vertex_output_attr(c, false));
+  vp.attr_count = kMaxAttr;
+  vp.fold_sum = false;
+  vp.point_size = false;
+  InputVertex in;
+  const CurrentGroup& cur = ctx->current;
+  std::copy(obj, obj + 4, in.pos);
+  std::copy(cur.color, cur.color + 4, in.color);
+  std::copy(cur.normal, cur.normal + 3, in.normal);
+  std::copy(cur.color2, cur.color2 + 3, in.color2);
+  in.fog = cur.fog_coord;
+  in.edge = 1;
+  for (int u = 0; u < kMaxTexUnits; ++u)
+    std::copy(cur.tex[u], cur.tex[u] + 4, in.tex[u]);
+  ClipSetup cs;
+  init_clip_setup(cs, ctx->raster);
+  PVertex out;
+  run_vertex_program(vp, cs, ctx->raster.viewport, &in, 0, &out, 1);
+  // §2.13: clipped as a point against the view volume and the user planes (tested, as for
+  // the draws, on the shader's clip coordinates).
+  const uint32_t outside = out.clipmask & ~static_cast<uint32_t>(kClipGuard);
+  if (outside != 0 || !(out.clip[3] > 0.0f)) {
+    rp.valid = false;
+    return false;
+  }
+  for (int i = 0; i < 3; ++i)
+    rp.win[i] = out.win[i];
+  rp.win[3] = out.clip[3];
+  rp.valid = true;
+  // The associated data are the shader's outputs (§2.13): colours (clamped), texture
+  // coordinates and gl_FogFragCoord as the distance.
+  for (int c = 0; c < 4; ++c) {
+    rp.color[c] = out.attr[kAttrColor + c];
+    rp.color2[c] = out.attr[kAttrColor2 + c];
+  }
+  for (int u = 0; u < kMaxTexUnits; ++u)
+    for (int c = 0; c < 4; ++c)
+      rp.tex[u][c] = out.attr[kAttrTex0 + 4 * u + c];
+  rp.distance = out.attr[kAttrFog];
+  return true;
 }
 
 void check_program_link(Context* ctx) {

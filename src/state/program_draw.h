@@ -9,6 +9,7 @@
 
 #include "fragment/shade.h"
 #include "geometry/vertex_program.h"
+#include "pixel/raster_pos.h"
 #include "state/program.h"
 
 namespace pineda {
@@ -37,5 +38,9 @@ struct ProgramDerived {
   std::shared_ptr<shader::Prepared> vs_prepared, fs_prepared;
   std::shared_ptr<ShaderSampler> sampler;
 };
+
+// glRasterPos with a vertex shader (GL 2.1 §2.13): the shader transforms the position; fills
+// `rp` and returns whether the position is valid.
+bool program_raster_pos(Context* ctx, const float obj[4], RasterPos& rp);
 
 } // namespace pineda

@@ -8,6 +8,7 @@
 #include "state/api_util.h"
 #include "dispatch.h"
 #include "state/draw_call.h"
+#include "state/program_draw.h"
 #include "state/validate.h"
 #include "geometry/light_eval.h"
 #include "state/select.h"
@@ -22,8 +23,16 @@ inline float clamp01(float v) {
 
 void raster_pos(float x, float y, float z, float w) {
   PINEDA_CTX_OUTSIDE("glRasterPos");
+  check_program_link(ctx);
   validate_state(ctx);
   RasterPos& rp = ctx->current.raster_pos;
+  if (ctx->program_draw->has_vertex) {
+    const float obj[4] = {x, y, z, w};
+    if (!program_raster_pos(ctx, obj, rp)) return;
+    select_raster_hit(ctx, rp.win[2]); // §5.2
+    mark_dirty(ctx, kDirtyPixel);
+    return;
+  }
   const glm::vec4 obj(x, y, z, w);
   const glm::vec4 eye = ctx->modelview.top() * obj;
   // The composite matrix, as the vertex path uses, so a raster position lands where a point

@@ -514,4 +514,73 @@ TEST_F(ShaderTest, BuiltInMatricesAndFixedVertexStage) {
   EXPECT_EQ(err(), static_cast<GLenum>(GL_NO_ERROR));
 }
 
+TEST_F(ShaderTest, RasterPositionThroughTheVertexShader) {
+  // §2.13: with a vertex shader the raster position and its data are the shader's outputs.
+  glUseProgram(program("void main() { gl_Position = gl_Vertex + vec4(0.5, 0.0, 0.0, 0.0);\n"
+                       "  gl_FrontColor = vec4(0.0, 0.0, 1.0, 1.0);\n"
+                       "  gl_TexCoord[1] = vec4(0.25);\n"
+                       "  gl_FogFragCoord = 3.0; }\n",
+                       nullptr));
+  glRasterPos2f(-1.0f, -1.0f);
+  GLfloat pos[4] = {}, color[4] = {}, tex[4] = {}, dist = 0, valid = 0;
+  glGetFloatv(GL_CURRENT_RASTER_POSITION, pos);
+  glGetFloatv(GL_CURRENT_RASTER_COLOR, color);
+  glGetFloatv(GL_CURRENT_RASTER_DISTANCE, &dist);
+  glGetFloatv(GL_CURRENT_RASTER_POSITION_VALID, &valid);
+  EXPECT_EQ(valid, 1.0f);
+  EXPECT_EQ(pos[0], 0.25f * kW);
+  EXPECT_EQ(pos[1], 0.0f);
+  EXPECT_EQ(color[2], 1.0f);
+  EXPECT_EQ(color[0], 0.0f);
+  EXPECT_EQ(dist, 3.0f);
+  glActiveTexture(GL_TEXTURE1);
+  glGetFloatv(GL_CURRENT_RASTER_TEXTURE_COORDS, tex);
+  glActiveTexture(GL_TEXTURE0);
+  EXPECT_EQ(tex[3], 0.25f);
+  glRasterPos2f(0.8f, 0.0f); // outside once moved by the shader
+  glGetFloatv(GL_CURRENT_RASTER_POSITION_VALID, &valid);
+  EXPECT_EQ(valid, 0.0f);
+  EXPECT_EQ(err(), static_cast<GLenum>(GL_NO_ERROR));
+}
+
+TEST_F(ShaderTest, LargeDrawSharedAmongWorkerThreads) {
+  // Enough vertices that the vertex shader runs on every worker thread (draw/draw.cpp), each
+  // with its own scratch registers, and the generic attribute rows follow each thread's range.
+  const GLuint p = glCreateProgram();
+  glAttachShader(p, shader(GL_VERTEX_SHADER,
+                           "attribute vec2 pos;\nattribute float shade;\n"
+                           "void main() { gl_Position = vec4(pos, 0.0, 1.0);\n"
+                           "  gl_FrontColor = vec4(shade, 1.0 - shade, 0.0, 1.0); }\n"));
+  glAttachShader(p, shader(GL_FRAGMENT_SHADER, "void main() { gl_FragColor = gl_Color; }\n"));
+  glBindAttribLocation(p, 0, "pos");
+  glBindAttribLocation(p, 1, "shade");
+  glLinkProgram(p);
+  glUseProgram(p);
+  // 32 x 32 pixel-sized quads, each drawn as two triangles, repeated 4 times: 24576 vertices.
+  std::vector<float> pos, shade;
+  for (int rep = 0; rep < 4; ++rep)
+    for (int y = 0; y < kH; ++y)
+      for (int x = 0; x < kW; ++x) {
+        const float x0 = 2.0f * x / kW - 1.0f, x1 = 2.0f * (x + 1) / kW - 1.0f;
+        const float y0 = 2.0f * y / kH - 1.0f, y1 = 2.0f * (y + 1) / kH - 1.0f;
+        for (float v : {x0, y0, x1, y0, x1, y1, x0, y0, x1, y1, x0, y1})
+          pos.push_back(v);
+        for (int k = 0; k < 6; ++k)
+          shade.push_back((x + y) % 2 == 0 ? 1.0f : 0.0f);
+      }
+  glVertexAttribPointer(0, 2, GL_FLOAT, GL_FALSE, 0, pos.data());
+  glVertexAttribPointer(1, 1, GL_FLOAT, GL_FALSE, 0, shade.data());
+  glEnableVertexAttribArray(0);
+  glEnableVertexAttribArray(1);
+  glClear(GL_COLOR_BUFFER_BIT);
+  glDrawArrays(GL_TRIANGLES, 0, static_cast<GLsizei>(shade.size()));
+  int wrong = 0;
+  for (int y = 0; y < kH; ++y)
+    for (int x = 0; x < kW; ++x)
+      wrong += pixel(x, y) != ((x + y) % 2 == 0 ? 0xff0000ffu : 0xff00ff00u) ? 1 : 0;
+  EXPECT_EQ(wrong, 0);
+  glDisableVertexAttribArray(0);
+  glDisableVertexAttribArray(1);
+}
+
 } // namespace
