@@ -221,16 +221,20 @@ void derive_window_draw(Context* ctx, Framebuffer& fb) {
   fb = w;
   fb.more_count = 0;
   uint32_t set = 0;
-  for (GLenum b : ctx->color_buffer.draw_buffers)
+  bool none = true;
+  for (GLenum b : ctx->color_buffer.draw_buffers) {
     set |= window_buffer_set(b);
+    none = none && b == GL_NONE;
+  }
   set &= ctx->color_buffers;
   if (w.front_color == nullptr || w.back_color == nullptr) {
-    // One colour buffer: drawn unless the draw buffers name none of the context's buffers.
-    if (set == 0) fb.color = nullptr;
+    // One colour buffer: drawn unless the draw buffers are NONE (a draw buffer kept from a
+    // double-buffered drawable the context was current on before still draws into it).
+    if (none) fb.color = nullptr;
     return;
   }
   const bool front = (set & kFront) != 0, back = (set & kBack) != 0;
-  fb.color = back ? w.back_color : front ? w.front_color : nullptr;
+  fb.color = none ? nullptr : back || !front ? w.back_color : w.front_color;
   if (front && back) {
     fb.more[0] = ColorTarget{w.front_color, w.color_stride, w.alpha_bits};
     fb.more_count = 1;
