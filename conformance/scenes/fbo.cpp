@@ -24,8 +24,7 @@ struct Fbo {
   PFNGLFRAMEBUFFERRENDERBUFFERPROC rb =
       proc<PFNGLFRAMEBUFFERRENDERBUFFERPROC>("glFramebufferRenderbuffer");
   PFNGLGENRENDERBUFFERSPROC gen_rb = proc<PFNGLGENRENDERBUFFERSPROC>("glGenRenderbuffers");
-  PFNGLDELETERENDERBUFFERSPROC del_rb =
-      proc<PFNGLDELETERENDERBUFFERSPROC>("glDeleteRenderbuffers");
+  PFNGLDELETERENDERBUFFERSPROC del_rb = proc<PFNGLDELETERENDERBUFFERSPROC>("glDeleteRenderbuffers");
   PFNGLBINDRENDERBUFFERPROC bind_rb = proc<PFNGLBINDRENDERBUFFERPROC>("glBindRenderbuffer");
   PFNGLRENDERBUFFERSTORAGEPROC storage =
       proc<PFNGLRENDERBUFFERSTORAGEPROC>("glRenderbufferStorage");
@@ -207,8 +206,8 @@ PINEDA_SCENE(fbo_cube_and_3d_attachments,
   clear_frame(0.1f, 0.1f, 0.1f);
   const GLuint cube = new_texture(GL_TEXTURE_CUBE_MAP, GL_LINEAR, GL_LINEAR);
   for (int face = 0; face < 6; ++face)
-    glTexImage2D(static_cast<GLenum>(GL_TEXTURE_CUBE_MAP_POSITIVE_X + face), 0, GL_RGBA8, 32, 32,
-                 0, GL_RGBA, GL_UNSIGNED_BYTE, nullptr);
+    glTexImage2D(static_cast<GLenum>(GL_TEXTURE_CUBE_MAP_POSITIVE_X + face), 0, GL_RGBA8, 32, 32, 0,
+                 GL_RGBA, GL_UNSIGNED_BYTE, nullptr);
   const GLuint vol = new_texture(GL_TEXTURE_3D, GL_NEAREST, GL_NEAREST);
   glTexImage3D(GL_TEXTURE_3D, 0, GL_RGBA8, 32, 32, 4, 0, GL_RGBA, GL_UNSIGNED_BYTE, nullptr);
   const GLuint f = fbo.framebuffer();
@@ -333,8 +332,8 @@ PINEDA_SCENE(fbo_draw_buffers,
   }
   const GLuint f = fbo.framebuffer();
   for (int i = 0; i < 3; ++i)
-    fbo.tex2d(GL_FRAMEBUFFER, static_cast<GLenum>(GL_COLOR_ATTACHMENT0 + i), GL_TEXTURE_2D,
-              tex[i], 0);
+    fbo.tex2d(GL_FRAMEBUFFER, static_cast<GLenum>(GL_COLOR_ATTACHMENT0 + i), GL_TEXTURE_2D, tex[i],
+              0);
   const GLenum bufs[3] = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1, GL_COLOR_ATTACHMENT2};
   fbo.draw_buffers(3, bufs);
   fbo.check();
@@ -453,20 +452,19 @@ PINEDA_SCENE(fbo_blit,
   glDisable(GL_STENCIL_TEST);
   fbo.bind(GL_DRAW_FRAMEBUFFER, 0);
   window_projection(frame);
-  blit(0, 0, 60, 48, 4, 4, 64, 52, GL_COLOR_BUFFER_BIT, GL_NEAREST);         // 1:1
-  blit(0, 0, 60, 48, 70, 4, 190, 100, GL_COLOR_BUFFER_BIT, GL_NEAREST);      // doubled
-  blit(0, 0, 60, 48, 4, 104, 124, 200, GL_COLOR_BUFFER_BIT, GL_LINEAR);      // doubled, LINEAR
-  blit(0, 0, 60, 48, 200, 4, 220, 20, GL_COLOR_BUFFER_BIT, GL_NEAREST);      // a third
-  blit(0, 0, 60, 48, 190, 100, 130, 52, GL_COLOR_BUFFER_BIT, GL_NEAREST);    // mirrored
+  blit(0, 0, 60, 48, 4, 4, 64, 52, GL_COLOR_BUFFER_BIT, GL_NEAREST);      // 1:1
+  blit(0, 0, 60, 48, 70, 4, 190, 100, GL_COLOR_BUFFER_BIT, GL_NEAREST);   // doubled
+  blit(0, 0, 60, 48, 4, 104, 124, 200, GL_COLOR_BUFFER_BIT, GL_LINEAR);   // doubled, LINEAR
+  blit(0, 0, 60, 48, 200, 4, 220, 20, GL_COLOR_BUFFER_BIT, GL_NEAREST);   // a third
+  blit(0, 0, 60, 48, 190, 100, 130, 52, GL_COLOR_BUFFER_BIT, GL_NEAREST); // mirrored
   glEnable(GL_SCISSOR_TEST);
   glScissor(140, 110, 40, 30);
-  blit(0, 0, 60, 48, 130, 104, 250, 200, GL_COLOR_BUFFER_BIT, GL_NEAREST);   // scissored
+  blit(0, 0, 60, 48, 130, 104, 250, 200, GL_COLOR_BUFFER_BIT, GL_NEAREST); // scissored
   glDisable(GL_SCISSOR_TEST);
   // Depth and stencil into the window's buffers, then shown: a quad where the stencil is 1
   // and the depth test passes against the blitted depths.
   glClear(GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT);
-  blit(0, 0, 60, 48, 190, 200, 250, 248, GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT,
-       GL_NEAREST);
+  blit(0, 0, 60, 48, 190, 200, 250, 248, GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT, GL_NEAREST);
   glEnable(GL_STENCIL_TEST);
   glStencilFunc(GL_EQUAL, 1, 0xff);
   glStencilOp(GL_KEEP, GL_KEEP, GL_KEEP);

@@ -46,8 +46,8 @@ constexpr float kMaxLodBias = 16.0f;                          // MAX_TEXTURE_LOD
 constexpr uint64_t kMaxTextureImageBytes = uint64_t(1) << 30;
 
 // ---- framebuffer objects (ARB_framebuffer_object, Table 6.X "Framebuffer Dependent Values") ----
-constexpr int kMaxDrawBuffers = 8;        // MAX_DRAW_BUFFERS (GL 2.0 §4.2.1)
-constexpr int kMaxColorAttachments = 8;   // MAX_COLOR_ATTACHMENTS
+constexpr int kMaxDrawBuffers = 8;          // MAX_DRAW_BUFFERS (GL 2.0 §4.2.1)
+constexpr int kMaxColorAttachments = 8;     // MAX_COLOR_ATTACHMENTS
 constexpr int kMaxRenderbufferSize = 16384; // MAX_RENDERBUFFER_SIZE, as MAX_VIEWPORT_DIMS
 // The largest storage of one renderbuffer; larger ones are OUT_OF_MEMORY (§4.4.2.1).
 constexpr uint64_t kMaxRenderbufferBytes = uint64_t(1) << 28;

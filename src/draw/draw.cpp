@@ -170,8 +170,8 @@ DrawRegion draw_region(const RasterState& rs, const FragCtx& frag, GLenum mode,
   draw_primitives(dc, mode, verts, indices, count);
 }
 
-// With FRONT_AND_BACK (GL 2.1 §4.2.1) or several draw buffers, the further buffers first, from the same depth and
-// stencil values (draw_buffers.h), then the primary one.
+// With FRONT_AND_BACK (GL 2.1 §4.2.1) or several draw buffers, the further buffers first, from the
+// same depth and stencil values (draw_buffers.h), then the primary one.
 [[gnu::noinline]] void rasterize_both_buffers(const DrawCall& dc, RasterWorkers* workers,
                                               GLenum mode, const PVertex* verts,
                                               const uint32_t* indices, size_t count) {

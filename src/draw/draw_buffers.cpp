@@ -20,13 +20,15 @@ void DepthStencilSnapshot::save(const Framebuffer& fb, const RasterState& rs,
   if (fb.depth != nullptr && rs.depth_test && rs.depth_write) {
     depth_.resize(w * rows);
     for (int y = region_.y0; y < region_.y1; ++y)
-      std::copy_n(fb.depth + at(y, fb.depth_stride), w, depth_.data() + static_cast<size_t>(y - region_.y0) * w);
+      std::copy_n(fb.depth + at(y, fb.depth_stride), w,
+                  depth_.data() + static_cast<size_t>(y - region_.y0) * w);
   }
   if (fb.stencil != nullptr && rs.stencil_test &&
       ((rs.stencil.writemask | rs.stencil_back.writemask) & 0xffu) != 0) {
     stencil_.resize(w * rows);
     for (int y = region_.y0; y < region_.y1; ++y)
-      std::copy_n(fb.stencil + at(y, fb.stencil_stride), w, stencil_.data() + static_cast<size_t>(y - region_.y0) * w);
+      std::copy_n(fb.stencil + at(y, fb.stencil_stride), w,
+                  stencil_.data() + static_cast<size_t>(y - region_.y0) * w);
   }
 }
 
@@ -37,9 +39,11 @@ void DepthStencilSnapshot::restore(const Framebuffer& fb) const {
     return static_cast<size_t>(y) * static_cast<size_t>(stride) + static_cast<size_t>(region_.x0);
   };
   for (int y = region_.y0; y < region_.y1 && !depth_.empty(); ++y)
-    std::copy_n(depth_.data() + static_cast<size_t>(y - region_.y0) * w, w, fb.depth + at(y, fb.depth_stride));
+    std::copy_n(depth_.data() + static_cast<size_t>(y - region_.y0) * w, w,
+                fb.depth + at(y, fb.depth_stride));
   for (int y = region_.y0; y < region_.y1 && !stencil_.empty(); ++y)
-    std::copy_n(stencil_.data() + static_cast<size_t>(y - region_.y0) * w, w, fb.stencil + at(y, fb.stencil_stride));
+    std::copy_n(stencil_.data() + static_cast<size_t>(y - region_.y0) * w, w,
+                fb.stencil + at(y, fb.stencil_stride));
 }
 
 } // namespace pineda

@@ -1,9 +1,9 @@
 // Drawing into every draw buffer (GL 2.1 §4.2.1, GL 2.0 DrawBuffers). With FRONT_AND_BACK on a
 // double-buffered drawable, or several draw buffers, a draw is rasterized once per buffer,
-// first into the further colour buffers and then into the primary one; all passes must meet every fragment with the same depth and stencil values
-// and so make the same decisions, so the depth and stencil values the first pass may change
-// are kept and put back. Only the draw's region is kept: the window rectangle its primitives
-// or pixels can reach.
+// first into the further colour buffers and then into the primary one; all passes must meet every
+// fragment with the same depth and stencil values and so make the same decisions, so the depth and
+// stencil values the first pass may change are kept and put back. Only the draw's region is kept:
+// the window rectangle its primitives or pixels can reach.
 #pragma once
 
 #include <cstdint>

@@ -89,7 +89,7 @@ struct FragCtx {
   // Rows of a block that lie entirely inside the buffer (bx + 8 <= fb_width) are loaded and
   // stored whole, with the coverage applied as a lane select.
   int fb_width = 0;
-  int stencil_stride = 0; // values from one row of the stencil buffer to the next
+  int stencil_stride = 0;   // values from one row of the stencil buffer to the next
   bool noop = true;         // nothing can change: no colour, depth or stencil update
   bool needs_color = false; // the colour path or the alpha test reads the primitive's colour
   bool needs_depth = false; // the depth path reads the primitive's z

@@ -18,7 +18,9 @@ enum class ColorFormat : uint8_t {
   RGB8,  // bytes R,G,B (3 bytes per pixel, alpha reads as 255)
 };
 
-inline int bytes_per_pixel(ColorFormat f) { return f == ColorFormat::RGB8 ? 3 : 4; }
+inline int bytes_per_pixel(ColorFormat f) {
+  return f == ColorFormat::RGB8 ? 3 : 4;
+}
 
 // A colour buffer drawing writes besides the primary one (GL 2.0 §4.2.1: DrawBuffers, or
 // FRONT_AND_BACK of a double-buffered window), laid out in the framebuffer's colour format.
@@ -64,9 +66,7 @@ struct Framebuffer {
   uint8_t* back_color = nullptr;
 
   uint8_t* color_row(int y) const { return color + static_cast<ptrdiff_t>(y) * color_stride; }
-  uint32_t depth_max() const {
-    return depth_bits >= 32 ? 0xffffffffu : ((1u << depth_bits) - 1u);
-  }
+  uint32_t depth_max() const { return depth_bits >= 32 ? 0xffffffffu : ((1u << depth_bits) - 1u); }
   // A framebuffer to draw into or read from is there (a bound window, or a framebuffer
   // object with an image); its colour may still be absent (draw buffer NONE, depth only).
   bool present() const { return width > 0 && height > 0; }

@@ -416,12 +416,14 @@ bool read_depth(const Framebuffer& fb, const Span& s, int x, int y, GLenum type,
   const bool sw = pack.swap_bytes;
   switch (type) {
   case GL_UNSIGNED_BYTE:
-    pack_scalar_rows<uint8_t>(fb.depth, fb.depth_stride, s, x, y, pl, sw, dst,
-                              [&](uint32_t d) { return static_cast<uint8_t>(to_unorm(d, max, 0xffu)); });
+    pack_scalar_rows<uint8_t>(fb.depth, fb.depth_stride, s, x, y, pl, sw, dst, [&](uint32_t d) {
+      return static_cast<uint8_t>(to_unorm(d, max, 0xffu));
+    });
     return true;
   case GL_BYTE:
-    pack_scalar_rows<int8_t>(fb.depth, fb.depth_stride, s, x, y, pl, sw, dst,
-                             [&](uint32_t d) { return static_cast<int8_t>(to_snorm(d, max, 0xffu)); });
+    pack_scalar_rows<int8_t>(fb.depth, fb.depth_stride, s, x, y, pl, sw, dst, [&](uint32_t d) {
+      return static_cast<int8_t>(to_snorm(d, max, 0xffu));
+    });
     return true;
   case GL_UNSIGNED_SHORT:
     pack_scalar_rows<uint16_t>(fb.depth, fb.depth_stride, s, x, y, pl, sw, dst, [&](uint32_t d) {
@@ -461,7 +463,8 @@ bool read_stencil(const Framebuffer& fb, const Span& s, int x, int y, GLenum typ
   const bool sw = pack.swap_bytes;
   switch (type) {
   case GL_UNSIGNED_BYTE:
-    pack_scalar_rows<uint8_t>(fb.stencil, fb.stencil_stride, s, x, y, pl, sw, dst, [](uint8_t v) { return v; });
+    pack_scalar_rows<uint8_t>(fb.stencil, fb.stencil_stride, s, x, y, pl, sw, dst,
+                              [](uint8_t v) { return v; });
     return true;
   case GL_BYTE:
     pack_scalar_rows<uint8_t>(fb.stencil, fb.stencil_stride, s, x, y, pl, sw, dst,
@@ -513,9 +516,8 @@ bool read_depth_stencil(const Framebuffer& fb, const Span& s, int x, int y, cons
     const uint8_t* st = fb.stencil + ptrdiff_t(wy) * fb.stencil_stride;
     uint8_t* out = dst + pl.origin + size_t(wy - y) * pl.row_stride + size_t(s.x0 - x) * 4;
     for (int wx = s.x0; wx < s.x1; ++wx, out += 4) {
-      const uint32_t d24 = fb.depth_bits == 24
-                               ? z[wx]
-                               : uint32_t(std::nearbyint(double(z[wx]) / max * 16777215.0));
+      const uint32_t d24 =
+          fb.depth_bits == 24 ? z[wx] : uint32_t(std::nearbyint(double(z[wx]) / max * 16777215.0));
       put<uint32_t>(out, (d24 << 8) | st[wx], sw);
     }
   }
@@ -544,7 +546,8 @@ bool is_valid_type(GLenum type) {
   case GL_INT:
   case GL_FLOAT:
   case GL_BITMAP:
-  case GL_UNSIGNED_INT_24_8: return true;
+  case GL_UNSIGNED_INT_24_8:
+    return true;
   default: return is_packed_pixel_type(type);
   }
 }
@@ -554,7 +557,8 @@ int pixel_format_components(GLenum format) {
   case GL_COLOR_INDEX:
   case GL_STENCIL_INDEX:
   case GL_DEPTH_COMPONENT:
-  case GL_DEPTH_STENCIL: return 1;
+  case GL_DEPTH_STENCIL:
+    return 1;
   default: {
     uint8_t slots[4];
     return format_slots(format, slots);
@@ -571,7 +575,8 @@ int pixel_type_size(GLenum type) {
   case GL_UNSIGNED_INT:
   case GL_INT:
   case GL_FLOAT:
-  case GL_UNSIGNED_INT_24_8: return 4;
+  case GL_UNSIGNED_INT_24_8:
+    return 4;
   default: {
     PackedLayout layout;
     return packed_layout(type, layout) ? layout.bytes : 0;

@@ -25,7 +25,6 @@ const StateArea* const kAreas[] = {
     &kFragmentArea,      // fragment_state.h: Tables 6.20-6.22
     &kAccumArea,         // fragment_state.h: Table 6.22
     &kFramebufferArea,   // draw_read_buffer.h: Tables 6.21, 6.35
-    &kFramebufferObjectArea, // framebuffer_object.h: ARB_framebuffer_object state
     &kPixelArea,         // pixel.h: Tables 6.23-6.27
     &kEvalArea,          // eval.h: Table 6.28
     &kSelectArea,        // select.h: Table 6.31 selection and feedback
@@ -34,6 +33,8 @@ const StateArea* const kAreas[] = {
     &kVertexArrayArea,   // varray.h: Tables 6.6-6.9
     &kAttribStackArea,   // attrib.h: Table 6.34 attribute stacks
     &kProgramArea,       // program.h: Tables 6.29-6.31 shaders and programs
+    // framebuffer_object.h: framebuffer objects (ARB_framebuffer_object)
+    &kFramebufferObjectArea,
 };
 
 } // namespace

@@ -98,8 +98,8 @@ struct Context {
   // ---- window system (set by osmesa.cpp / glx through winsys/common/surface_binding.h) ----
   Framebuffer window; // the drawable's buffers
   // ---- the framebuffers the commands use (framebuffer_object.h: sync_framebuffers) ----
-  Framebuffer fb;      // drawing: the window's draw buffers or a framebuffer object's images
-  Framebuffer read_fb; // reading: its colour is the read buffer
+  Framebuffer fb;       // drawing: the window's draw buffers or a framebuffer object's images
+  Framebuffer read_fb;  // reading: its colour is the read buffer
   FramebufferState fbo; // framebuffer and renderbuffer objects, bindings
   bool ever_current = false;
   // The colour buffers the window has (GL 2.1 table 4.4), kColorBuffer* bits: window.color is

@@ -152,8 +152,8 @@ bool read_pixels_transfer(Context* ctx, int x, int y, int w, int h, GLenum forma
   const PixelTransferView xfer = pixel_transfer_view(ctx);
   const bool depth = format == GL_DEPTH_COMPONENT, stencil = format == GL_STENCIL_INDEX;
   const bool both = format == GL_DEPTH_STENCIL;
-  if (both ? !depth_transfer_active(xfer) && !stencil_transfer_active(xfer)
-      : depth     ? !depth_transfer_active(xfer)
+  if (both      ? !depth_transfer_active(xfer) && !stencil_transfer_active(xfer)
+      : depth   ? !depth_transfer_active(xfer)
       : stencil ? !stencil_transfer_active(xfer)
                 : !rgba_transfer_active(xfer))
     return false;

@@ -229,8 +229,7 @@ void GLAPIENTRY DrawBuffers(GLsizei n, const GLenum* bufs) {
     }
     // A buffer named twice (other than NONE) is INVALID_OPERATION.
     const uint32_t bit = object ? 1u << (b - GL_COLOR_ATTACHMENT0) : 1u << (b & 31u);
-    const bool twice = object ? (seen & bit) != 0
-                              : std::find(bufs, bufs + i, b) != bufs + i;
+    const bool twice = object ? (seen & bit) != 0 : std::find(bufs, bufs + i, b) != bufs + i;
     if (twice) return record_error(ctx, GL_INVALID_OPERATION, "glDrawBuffers", b);
     seen |= bit;
   }

@@ -1,7 +1,7 @@
-// Framebuffer and renderbuffer objects (ARB_framebuffer_object, EXT_framebuffer_object; GL 3.0
-// §4.4 on GL 2.1): names, bindings, renderbuffer storage, attachments, completeness (§4.4.4),
-// their queries (§6.1.3 GetFramebufferAttachmentParameteriv, GetRenderbufferParameteriv),
-// GenerateMipmap (§3.8.8), and the derivation of Context::fb and Context::read_fb.
+// Framebuffer objects (ARB_framebuffer_object, EXT_framebuffer_object; GL 3.0 §4.4 on GL 2.1):
+// names, bindings, attachments, completeness (§4.4.4), GetFramebufferAttachmentParameteriv
+// (§6.1.3), and the derivation of Context::fb and Context::read_fb. Renderbuffers are in
+// renderbuffer.cpp, glBlitFramebuffer in blit.cpp.
 #include "state/framebuffer_object.h"
 
 #include <GL/glext.h>
@@ -12,7 +12,6 @@
 #include "dispatch.h"
 #include "state/api_util.h"
 #include "state/area.h"
-#include "state/tex_image.h"
 #include "state/texture_internal.h"
 
 namespace pineda {
@@ -42,8 +41,7 @@ int attachment_index(GLenum attachment) {
 }
 
 bool is_framebuffer_target(GLenum target) {
-  return target == GL_FRAMEBUFFER || target == GL_DRAW_FRAMEBUFFER ||
-         target == GL_READ_FRAMEBUFFER;
+  return target == GL_FRAMEBUFFER || target == GL_DRAW_FRAMEBUFFER || target == GL_READ_FRAMEBUFFER;
 }
 
 FramebufferObject* find_framebuffer(Context* ctx, GLuint name) {
@@ -52,91 +50,19 @@ FramebufferObject* find_framebuffer(Context* ctx, GLuint name) {
   return it == ctx->fbo.objects.end() ? nullptr : it->second.get();
 }
 
-std::shared_ptr<Renderbuffer> find_renderbuffer(Context* ctx, GLuint name) {
-  if (name == 0) return nullptr;
-  auto it = ctx->shared->renderbuffers.find(name);
-  return it == ctx->shared->renderbuffers.end() ? nullptr : it->second;
-}
-
 // The framebuffer object bound to `target` (FRAMEBUFFER means the draw framebuffer, §4.4.1).
 FramebufferObject* bound_object(Context* ctx, GLenum target) {
   return find_framebuffer(ctx, target == GL_READ_FRAMEBUFFER ? ctx->fbo.read_binding
                                                              : ctx->fbo.draw_binding);
 }
 
-// Records that an object of the share group changed (texture images, renderbuffer storage).
-void objects_changed(Context* ctx) {
-  ++ctx->shared->texture_generation;
-  mark_dirty(ctx, kDirtyTexture);
-  framebuffers_changed(ctx);
-}
-
-// ---- formats (§4.4.2.1 Table 4.X, §4.4.4 colour-, depth- and stencil-renderable) ----
-
-struct RenderFormat {
-  bool color = false;
-  TexBase base = TexBase::RGBA;
-  uint8_t r = 0, g = 0, b = 0, a = 0, l = 0, i = 0;
-  uint8_t depth = 0, stencil = 0;
-};
-
-// The renderbuffer formats: the colour formats of Table 3.16 that are colour-renderable (the
-// compatibility formats ALPHA, LUMINANCE, LUMINANCE_ALPHA and INTENSITY too; not the generic
-// compressed or the numeric 1-4 ones), the depth formats, the stencil index formats and
-// DEPTH_STENCIL.
-bool renderbuffer_format(GLenum internalformat, RenderFormat& out) {
-  switch (internalformat) {
-  case GL_DEPTH_COMPONENT:
-  case GL_DEPTH_COMPONENT24:
-    out.depth = 24;
-    return true;
-  case GL_DEPTH_COMPONENT16:
-    out.depth = 16;
-    return true;
-  case GL_DEPTH_COMPONENT32:
-    out.depth = 32;
-    return true;
-  case GL_STENCIL_INDEX:
-  case GL_STENCIL_INDEX1:
-  case GL_STENCIL_INDEX4:
-  case GL_STENCIL_INDEX8:
-  case GL_STENCIL_INDEX16:
-    out.stencil = 8;
-    return true;
-  case GL_DEPTH_STENCIL:
-  case GL_DEPTH24_STENCIL8:
-    out.depth = 24;
-    out.stencil = 8;
-    return true;
-  case 1:
-  case 2:
-  case 3:
-  case 4:
-  case GL_COMPRESSED_ALPHA:
-  case GL_COMPRESSED_LUMINANCE:
-  case GL_COMPRESSED_LUMINANCE_ALPHA:
-  case GL_COMPRESSED_INTENSITY:
-  case GL_COMPRESSED_RGB:
-  case GL_COMPRESSED_RGBA:
-    return false;
-  default:
-    break;
-  }
-  TexFormatInfo f;
-  if (!lookup_internal_format(GLint(internalformat), f) || f.depth) return false;
-  out.color = true;
-  out.base = f.base;
-  out.r = f.r, out.g = f.g, out.b = f.b, out.a = f.a, out.l = f.l, out.i = f.i;
-  return true;
-}
-
-// ---- attached images ----
-
-uint8_t clamp_size(int bits) {
-  return uint8_t(std::min(bits, 8));
-}
-
 } // namespace
+
+std::shared_ptr<Renderbuffer> find_renderbuffer(Context* ctx, GLuint name) {
+  if (name == 0) return nullptr;
+  auto it = ctx->shared->renderbuffers.find(name);
+  return it == ctx->shared->renderbuffers.end() ? nullptr : it->second;
+}
 
 bool attached_image(const Attachment& a, AttachedImage& out) {
   out = AttachedImage{};
@@ -198,11 +124,13 @@ bool attached_image(const Attachment& a, AttachedImage& out) {
     out.rgba_stride = ptrdiff_t(im.width) * 4;
   }
   const bool lum = im.base == TexBase::Luminance || im.base == TexBase::LuminanceAlpha;
-  const int rgb_size = lum ? im.luminance_size : im.base == TexBase::Intensity ? im.intensity_size : 0;
-  out.red_size = clamp_size(im.red_size != 0 ? im.red_size : rgb_size);
-  out.green_size = clamp_size(im.green_size);
-  out.blue_size = clamp_size(im.blue_size);
-  out.alpha_size = clamp_size(im.base == TexBase::Intensity ? im.intensity_size : im.alpha_size);
+  const int rgb_size = lum                             ? im.luminance_size
+                       : im.base == TexBase::Intensity ? im.intensity_size
+                                                       : 0;
+  out.red_size = reported_bits(im.red_size != 0 ? im.red_size : rgb_size);
+  out.green_size = reported_bits(im.green_size);
+  out.blue_size = reported_bits(im.blue_size);
+  out.alpha_size = reported_bits(im.base == TexBase::Intensity ? im.intensity_size : im.alpha_size);
   out.depth_size = im.depth_size;
   return true;
 }
@@ -293,16 +221,20 @@ void derive_window_draw(Context* ctx, Framebuffer& fb) {
   fb = w;
   fb.more_count = 0;
   uint32_t set = 0;
-  for (GLenum b : ctx->color_buffer.draw_buffers)
+  bool none = true;
+  for (GLenum b : ctx->color_buffer.draw_buffers) {
     set |= window_buffer_set(b);
+    none = none && b == GL_NONE;
+  }
   set &= ctx->color_buffers;
   if (w.front_color == nullptr || w.back_color == nullptr) {
-    // One colour buffer: drawn unless the draw buffers name none of the context's buffers.
-    if (set == 0) fb.color = nullptr;
+    // One colour buffer: drawn unless the draw buffers are NONE (a draw buffer kept from a
+    // double-buffered drawable the context was current on before still draws into it).
+    if (none) fb.color = nullptr;
     return;
   }
   const bool front = (set & kFront) != 0, back = (set & kBack) != 0;
-  fb.color = back ? w.back_color : front ? w.front_color : nullptr;
+  fb.color = none ? nullptr : back || !front ? w.back_color : w.front_color;
   if (front && back) {
     fb.more[0] = ColorTarget{w.front_color, w.color_stride, w.alpha_bits};
     fb.more_count = 1;
@@ -321,9 +253,9 @@ void derive_window_read(Context* ctx, Framebuffer& fb) {
   if (w.front_color != nullptr && w.back_color != nullptr)
     fb.color = (set & kFront) != 0 && (set & kBack) == 0 ? w.front_color : w.back_color;
   // FRONT names the front left buffer even when BACK exists too (§4.3.2).
-  if (w.front_color != nullptr && (ctx->pixel.read_buffer == GL_FRONT ||
-                                   ctx->pixel.read_buffer == GL_FRONT_LEFT ||
-                                   ctx->pixel.read_buffer == GL_LEFT))
+  if (w.front_color != nullptr &&
+      (ctx->pixel.read_buffer == GL_FRONT || ctx->pixel.read_buffer == GL_FRONT_LEFT ||
+       ctx->pixel.read_buffer == GL_LEFT))
     fb.color = w.front_color;
 }
 
@@ -448,8 +380,7 @@ void sync_framebuffers(Context* ctx) {
     st.read_status = ctx->window.present() ? GL_FRAMEBUFFER_COMPLETE : GL_FRAMEBUFFER_UNDEFINED;
   } else {
     derive_object(*read, nullptr, false, ctx->pixel.read_buffer, ctx->read_fb, nullptr);
-    st.read_status =
-        object_status(*read, object_draw_buffers(ctx, *read), ctx->pixel.read_buffer);
+    st.read_status = object_status(*read, object_draw_buffers(ctx, *read), ctx->pixel.read_buffer);
   }
   mark_dirty(ctx, kDirtyFramebuffer);
 }
@@ -596,20 +527,6 @@ void bind_framebuffer(GLenum target, GLuint framebuffer, const char* func) {
   rebind(ctx, draw, read);
 }
 
-void bind_renderbuffer(GLenum target, GLuint renderbuffer, const char* func) {
-  PINEDA_CTX_OUTSIDE(func);
-  if (target != GL_RENDERBUFFER) return record_error(ctx, GL_INVALID_ENUM, func, target);
-  if (renderbuffer != 0) {
-    auto& slot = ctx->shared->renderbuffers[renderbuffer];
-    if (!slot) {
-      slot = std::make_shared<Renderbuffer>();
-      slot->name = renderbuffer;
-    }
-    slot->bound_once = true;
-  }
-  ctx->fbo.renderbuffer_binding = renderbuffer;
-}
-
 // ---- attachments ----
 
 // The framebuffer object of an attachment command, or null with the error recorded.
@@ -689,57 +606,9 @@ void framebuffer_texture(GLenum target, GLenum attachment, GLenum textarget, GLu
   set_attachment(ctx, fbo, index, a);
 }
 
-// ---- renderbuffer storage (§4.4.2.1) ----
-
-void renderbuffer_storage(GLenum target, GLsizei samples, GLenum internalformat, GLsizei width,
-                          GLsizei height, const char* func) {
-  PINEDA_CTX_OUTSIDE(func);
-  if (target != GL_RENDERBUFFER) return record_error(ctx, GL_INVALID_ENUM, func, target);
-  RenderFormat f;
-  if (!renderbuffer_format(internalformat, f))
-    return record_error(ctx, GL_INVALID_ENUM, func, internalformat);
-  if (width < 0 || height < 0 || width > kMaxRenderbufferSize || height > kMaxRenderbufferSize)
-    return record_error(ctx, GL_INVALID_VALUE, func);
-  // MAX_SAMPLES is 0: no multisampled renderbuffers.
-  if (samples < 0 || samples > 0) return record_error(ctx, GL_INVALID_VALUE, func);
-  std::shared_ptr<Renderbuffer> rb = find_renderbuffer(ctx, ctx->fbo.renderbuffer_binding);
-  if (rb == nullptr) return record_error(ctx, GL_INVALID_OPERATION, func);
-  const uint64_t pixels = uint64_t(width) * uint64_t(height);
-  const uint64_t bytes = pixels * ((f.color ? 4 : 0) + (f.depth ? 4 : 0) + (f.stencil ? 1 : 0));
-  if (bytes > kMaxRenderbufferBytes) return record_error(ctx, GL_OUT_OF_MEMORY, func);
-  // The new storage is made completely before the object changes: OUT_OF_MEMORY changes
-  // nothing (GL 2.1 §2.5). Its contents are undefined (§4.4.2.1); Pineda's are zero.
-  Renderbuffer next;
-  try {
-    if (f.color) next.rgba.assign(pixels * 4, 0);
-    if (f.depth) next.depth.assign(pixels, 0);
-    if (f.stencil) next.stencil.assign(pixels, 0);
-  } catch (const std::bad_alloc&) {
-    return record_error(ctx, GL_OUT_OF_MEMORY, func);
-  }
-  normalize_drawn_images(ctx);
-  rb->internal_format = internalformat;
-  rb->width = width;
-  rb->height = height;
-  rb->color = f.color;
-  rb->base = f.base;
-  const bool lum = f.base == TexBase::Luminance || f.base == TexBase::LuminanceAlpha;
-  rb->red_size = clamp_size(f.color ? (lum ? f.l : f.base == TexBase::Intensity ? f.i : f.r) : 0);
-  rb->green_size = clamp_size(f.g);
-  rb->blue_size = clamp_size(f.b);
-  rb->alpha_size = clamp_size(f.base == TexBase::Intensity ? f.i : f.a);
-  rb->depth_size = f.depth;
-  rb->stencil_size = f.stencil;
-  rb->rgba = std::move(next.rgba);
-  rb->depth = std::move(next.depth);
-  rb->stencil = std::move(next.stencil);
-  objects_changed(ctx);
-}
-
 // ---- GetFramebufferAttachmentParameteriv (§6.1.3) ----
 
-bool attachment_param(Context* ctx, const Attachment& a, GLenum pname, GLint* v,
-                      const char* func) {
+bool attachment_param(Context* ctx, const Attachment& a, GLenum pname, GLint* v, const char* func) {
   if (pname == GL_FRAMEBUFFER_ATTACHMENT_OBJECT_TYPE) {
     *v = GLint(a.type);
     return true;
@@ -901,8 +770,8 @@ void GLAPIENTRY FramebufferTextureLayer(GLenum target, GLenum attachment, GLuint
                       "glFramebufferTextureLayer");
 }
 
-void GLAPIENTRY FramebufferRenderbuffer(GLenum target, GLenum attachment,
-                                        GLenum renderbuffertarget, GLuint renderbuffer) {
+void GLAPIENTRY FramebufferRenderbuffer(GLenum target, GLenum attachment, GLenum renderbuffertarget,
+                                        GLuint renderbuffer) {
   const char* func = "glFramebufferRenderbuffer";
   PINEDA_CTX_OUTSIDE(func);
   int index = 0;
@@ -920,8 +789,8 @@ void GLAPIENTRY FramebufferRenderbuffer(GLenum target, GLenum attachment,
   set_attachment(ctx, fbo, index, a);
 }
 
-void GLAPIENTRY GetFramebufferAttachmentParameteriv(GLenum target, GLenum attachment,
-                                                    GLenum pname, GLint* params) {
+void GLAPIENTRY GetFramebufferAttachmentParameteriv(GLenum target, GLenum attachment, GLenum pname,
+                                                    GLint* params) {
   const char* func = "glGetFramebufferAttachmentParameteriv";
   PINEDA_CTX_OUTSIDE(func);
   int index = 0;
@@ -938,152 +807,6 @@ void GLAPIENTRY GetFramebufferAttachmentParameteriv(GLenum target, GLenum attach
   }
   GLint v = 0;
   if (attachment_param(ctx, fbo->att[index], pname, &v, func) && params != nullptr) *params = v;
-}
-
-// ---- renderbuffer objects (§4.4.2.1) ----
-
-void GLAPIENTRY GenRenderbuffers(GLsizei n, GLuint* renderbuffers) {
-  PINEDA_CTX_OUTSIDE("glGenRenderbuffers");
-  if (n < 0) return record_error(ctx, GL_INVALID_VALUE, "glGenRenderbuffers");
-  if (renderbuffers == nullptr) return;
-  auto& objs = ctx->shared->renderbuffers;
-  GLuint next = 1;
-  for (GLsizei i = 0; i < n; ++i) {
-    while (objs.count(next) != 0)
-      ++next;
-    auto obj = std::make_shared<Renderbuffer>();
-    obj->name = next;
-    objs.emplace(next, std::move(obj));
-    renderbuffers[i] = next++;
-  }
-}
-
-void GLAPIENTRY DeleteRenderbuffers(GLsizei n, const GLuint* renderbuffers) {
-  PINEDA_CTX_OUTSIDE("glDeleteRenderbuffers");
-  if (n < 0) return record_error(ctx, GL_INVALID_VALUE, "glDeleteRenderbuffers");
-  if (renderbuffers == nullptr) return;
-  for (GLsizei i = 0; i < n; ++i) {
-    const GLuint name = renderbuffers[i];
-    std::shared_ptr<Renderbuffer> rb = find_renderbuffer(ctx, name);
-    if (rb == nullptr) continue;
-    // §4.4.2.1: a deleted bound renderbuffer is unbound, and detached from the bound draw and
-    // read framebuffers; other framebuffers keep it until they detach it.
-    if (ctx->fbo.renderbuffer_binding == name) ctx->fbo.renderbuffer_binding = 0;
-    bool changed = false;
-    for (FramebufferObject* f : {draw_framebuffer_object(ctx), read_framebuffer_object(ctx)}) {
-      if (f == nullptr) continue;
-      for (Attachment& a : f->att)
-        if (a.type == GL_RENDERBUFFER && a.renderbuffer == rb) {
-          normalize_drawn_images(ctx);
-          a = Attachment{};
-          changed = true;
-        }
-    }
-    ctx->shared->renderbuffers.erase(name);
-    if (changed) framebuffers_changed(ctx);
-  }
-}
-
-GLboolean GLAPIENTRY IsRenderbuffer(GLuint renderbuffer) {
-  Context* ctx = outside_begin_end("glIsRenderbuffer");
-  if (ctx == nullptr) return GL_FALSE;
-  const std::shared_ptr<Renderbuffer> rb = find_renderbuffer(ctx, renderbuffer);
-  return rb != nullptr && rb->bound_once ? GL_TRUE : GL_FALSE;
-}
-
-void GLAPIENTRY BindRenderbuffer(GLenum target, GLuint renderbuffer) {
-  bind_renderbuffer(target, renderbuffer, "glBindRenderbuffer");
-}
-
-void GLAPIENTRY BindRenderbufferEXT(GLenum target, GLuint renderbuffer) {
-  bind_renderbuffer(target, renderbuffer, "glBindRenderbufferEXT");
-}
-
-void GLAPIENTRY RenderbufferStorage(GLenum target, GLenum internalformat, GLsizei width,
-                                    GLsizei height) {
-  renderbuffer_storage(target, 0, internalformat, width, height, "glRenderbufferStorage");
-}
-
-void GLAPIENTRY RenderbufferStorageMultisample(GLenum target, GLsizei samples,
-                                               GLenum internalformat, GLsizei width,
-                                               GLsizei height) {
-  renderbuffer_storage(target, samples, internalformat, width, height,
-                       "glRenderbufferStorageMultisample");
-}
-
-void GLAPIENTRY GetRenderbufferParameteriv(GLenum target, GLenum pname, GLint* params) {
-  const char* func = "glGetRenderbufferParameteriv";
-  PINEDA_CTX_OUTSIDE(func);
-  if (target != GL_RENDERBUFFER) return record_error(ctx, GL_INVALID_ENUM, func, target);
-  std::shared_ptr<Renderbuffer> rb = find_renderbuffer(ctx, ctx->fbo.renderbuffer_binding);
-  if (rb == nullptr) return record_error(ctx, GL_INVALID_OPERATION, func);
-  GLint v = 0;
-  switch (pname) {
-  case GL_RENDERBUFFER_WIDTH:
-    v = rb->width;
-    break;
-  case GL_RENDERBUFFER_HEIGHT:
-    v = rb->height;
-    break;
-  case GL_RENDERBUFFER_INTERNAL_FORMAT:
-    v = GLint(rb->internal_format);
-    break;
-  case GL_RENDERBUFFER_RED_SIZE:
-    v = rb->red_size;
-    break;
-  case GL_RENDERBUFFER_GREEN_SIZE:
-    v = rb->green_size;
-    break;
-  case GL_RENDERBUFFER_BLUE_SIZE:
-    v = rb->blue_size;
-    break;
-  case GL_RENDERBUFFER_ALPHA_SIZE:
-    v = rb->alpha_size;
-    break;
-  case GL_RENDERBUFFER_DEPTH_SIZE:
-    v = rb->depth_size;
-    break;
-  case GL_RENDERBUFFER_STENCIL_SIZE:
-    v = rb->stencil_size;
-    break;
-  case GL_RENDERBUFFER_SAMPLES:
-    v = 0;
-    break;
-  default:
-    return record_error(ctx, GL_INVALID_ENUM, func, pname);
-  }
-  if (params != nullptr) *params = v;
-}
-
-// ---- GenerateMipmap (§3.8.8) ----
-
-void GLAPIENTRY GenerateMipmap(GLenum target) {
-  PINEDA_CTX_OUTSIDE("glGenerateMipmap");
-  const int ti = texture_target_index(target);
-  if (ti < 0) return record_error(ctx, GL_INVALID_ENUM, "glGenerateMipmap", target);
-  TextureObject* tex = active_texture_object(ctx, ti);
-  const int base = tex->params.base_level;
-  if (base >= kMaxTexLevels) return record_error(ctx, GL_INVALID_OPERATION, "glGenerateMipmap");
-  const int faces = target == GL_TEXTURE_CUBE_MAP ? 6 : 1;
-  if (faces == 6) {
-    // A cube map must be cube complete (§3.8.10): square base images of one size and format.
-    const TexImage& first = tex->images[0][base];
-    for (int f = 0; f < 6; ++f) {
-      const TexImage& im = tex->images[f][base];
-      if (im.width == 0 || im.width != im.height || im.width != first.width ||
-          im.internal_format != first.internal_format || im.border != first.border)
-        return record_error(ctx, GL_INVALID_OPERATION, "glGenerateMipmap");
-    }
-  }
-  // What drawing wrote into the base level is read in its base format.
-  normalize_drawn_images(ctx);
-  try {
-    for (int f = 0; f < faces; ++f)
-      generate_mipmaps(*tex, f, texture_dims(target));
-  } catch (const std::bad_alloc&) {
-    record_error(ctx, GL_OUT_OF_MEMORY, "glGenerateMipmap");
-  }
-  objects_changed(ctx);
 }
 
 } // namespace exec

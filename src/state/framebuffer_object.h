@@ -87,6 +87,14 @@ struct AttachedImage {
   uint8_t depth_size = 0, stencil_size = 0;
 };
 
+// The renderbuffer named `name`, or null.
+std::shared_ptr<Renderbuffer> find_renderbuffer(Context* ctx, GLuint name);
+
+// Component sizes as the queries report them: Pineda stores 8 bits a colour component at most.
+inline uint8_t reported_bits(int bits) {
+  return uint8_t(bits < 8 ? bits : 8);
+}
+
 // The image an attachment names, or false when it names none (no object, or a texture level
 // or slice that has no image).
 bool attached_image(const Attachment& a, AttachedImage& out);

@@ -25,8 +25,7 @@ void read_framebuffer(const Context* ctx, int x, int y, int w, int h, bool depth
   std::fill(out, out + n * (depth ? 1 : 4), 0.0f);
   if (!ctx->read_fb.present() || w == 0 || h == 0) return;
   PixelStore pack; // tightly packed floats
-  read_pixels(ctx->read_fb, x, y, w, h, depth ? GL_DEPTH_COMPONENT : GL_RGBA, GL_FLOAT, pack,
-              out);
+  read_pixels(ctx->read_fb, x, y, w, h, depth ? GL_DEPTH_COMPONENT : GL_RGBA, GL_FLOAT, pack, out);
   if (depth)
     transfer_depth(pixel_transfer_view(ctx), out, n);
   else
@@ -42,8 +41,8 @@ bool source_missing(const Context* ctx, bool depth, bool stencil = false) {
 
 // The stencil indices of the w x h rectangle at (x, y), through the stencil transfer
 // operations, into a DEPTH_STENCIL image (EXT_packed_depth_stencil).
-void copy_stencil(const Context* ctx, TexImage& im, int dims, int xoffset, int yoffset,
-                  int zoffset, int x, int y, int w, int h) {
+void copy_stencil(const Context* ctx, TexImage& im, int dims, int xoffset, int yoffset, int zoffset,
+                  int x, int y, int w, int h) {
   if (im.stencil.empty() || ctx->read_fb.stencil == nullptr) return;
   std::vector<uint32_t> s(size_t(w) * size_t(h), 0u);
   PixelStore pack;

@@ -165,8 +165,7 @@ void tex_image(const char* func, int dims, GLenum target, GLint level, GLint int
   if (fe != GL_NO_ERROR) return record_error(ctx, fe, func);
   // §3.8.1: depth formats go only with 1D and 2D targets, and with DEPTH_COMPONENT data.
   if (info.depth && (dims == 3 || it.cube)) return record_error(ctx, GL_INVALID_OPERATION, func);
-  if (!format_matches(info.depth, format))
-    return record_error(ctx, GL_INVALID_OPERATION, func);
+  if (!format_matches(info.depth, format)) return record_error(ctx, GL_INVALID_OPERATION, func);
   // The sizes the implementation supports at this level (§3.8.1, Table 6.36 limits).
   const int limit = it.max_size >> level;
   const bool fits = width - bb <= limit && (dims < 2 || height - bb <= limit) &&
@@ -235,8 +234,7 @@ void tex_sub_image(const char* func, int dims, GLenum target, GLint level, GLint
   if (im == nullptr) return;
   if (format == GL_STENCIL_INDEX) return record_error(ctx, stencil_data_error(im->is_depth), func);
   if (fe != GL_NO_ERROR) return record_error(ctx, fe, func);
-  if (!format_matches(im->is_depth, format))
-    return record_error(ctx, GL_INVALID_OPERATION, func);
+  if (!format_matches(im->is_depth, format)) return record_error(ctx, GL_INVALID_OPERATION, func);
   const size_t count = size_t(w) * size_t(h) * size_t(d);
   if (count == 0) return;
   // §3.8.2: from the pixel unpack buffer when one is bound.
@@ -539,8 +537,9 @@ void store_stencil_region(TexImage& im, int dims, int x, int y, int z, int w, in
   if (im.stencil.empty()) return;
   const int bi = im.border, bj = dims >= 2 ? im.border : 0, bk = dims >= 3 ? im.border : 0;
   for (int j = 0; j < h; ++j) {
-    const size_t idx = (size_t(z + bk) * size_t(im.height) + size_t(y + j + bj)) *
-                           size_t(im.width) + size_t(x + bi);
+    const size_t idx =
+        (size_t(z + bk) * size_t(im.height) + size_t(y + j + bj)) * size_t(im.width) +
+        size_t(x + bi);
     for (int i = 0; i < w; ++i)
       im.stencil[idx + size_t(i)] = uint8_t(s[size_t(j) * size_t(w) + size_t(i)] & 0xffu);
   }
@@ -677,8 +676,8 @@ void GLAPIENTRY GetTexImage(GLenum target, GLint level, GLenum format, GLenum ty
   const TexImage& im = it.tex->images[it.face][level];
   if (im.width == 0) return;
   // A depth-stencil image reads back as DEPTH_STENCIL or as its depth alone.
-  const bool ok = format_matches(im.is_depth, format) &&
-                  (format != GL_DEPTH_STENCIL || !im.stencil.empty());
+  const bool ok =
+      format_matches(im.is_depth, format) && (format != GL_DEPTH_STENCIL || !im.stencil.empty());
   if (!ok) return record_error(ctx, GL_INVALID_OPERATION, "glGetTexImage");
   // §6.1.4: into the pixel pack buffer when one is bound.
   if (!pack_memory(ctx, pixels,
@@ -714,6 +713,37 @@ void GLAPIENTRY GetTexImage(GLenum target, GLint level, GLenum format, GLenum ty
   } catch (const std::bad_alloc&) {
     record_error(ctx, GL_OUT_OF_MEMORY, "glGetTexImage");
   }
+}
+
+// ---- GenerateMipmap (§3.8.8) ----
+
+void GLAPIENTRY GenerateMipmap(GLenum target) {
+  PINEDA_CTX_OUTSIDE("glGenerateMipmap");
+  const int ti = texture_target_index(target);
+  if (ti < 0) return record_error(ctx, GL_INVALID_ENUM, "glGenerateMipmap", target);
+  TextureObject* tex = active_texture_object(ctx, ti);
+  const int base = tex->params.base_level;
+  if (base >= kMaxTexLevels) return record_error(ctx, GL_INVALID_OPERATION, "glGenerateMipmap");
+  const int faces = target == GL_TEXTURE_CUBE_MAP ? 6 : 1;
+  if (faces == 6) {
+    // A cube map must be cube complete (§3.8.10): square base images of one size and format.
+    const TexImage& first = tex->images[0][base];
+    for (int f = 0; f < 6; ++f) {
+      const TexImage& im = tex->images[f][base];
+      if (im.width == 0 || im.width != im.height || im.width != first.width ||
+          im.internal_format != first.internal_format || im.border != first.border)
+        return record_error(ctx, GL_INVALID_OPERATION, "glGenerateMipmap");
+    }
+  }
+  // What drawing wrote into the base level is read in its base format.
+  normalize_drawn_images(ctx);
+  try {
+    for (int f = 0; f < faces; ++f)
+      generate_mipmaps(*tex, f, texture_dims(target));
+  } catch (const std::bad_alloc&) {
+    record_error(ctx, GL_OUT_OF_MEMORY, "glGenerateMipmap");
+  }
+  texture_changed(ctx);
 }
 
 } // namespace exec

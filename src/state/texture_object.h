@@ -31,7 +31,7 @@ struct TexImage {
   // Component resolutions reported by glGetTexLevelParameter (TEXTURE_RED_SIZE ...).
   uint8_t red_size = 0, green_size = 0, blue_size = 0, alpha_size = 0;
   uint8_t luminance_size = 0, intensity_size = 0, depth_size = 0;
-  uint8_t stencil_size = 0; // 8 for DEPTH_STENCIL images (EXT_packed_depth_stencil)
+  uint8_t stencil_size = 0;  // 8 for DEPTH_STENCIL images (EXT_packed_depth_stencil)
   std::vector<uint8_t> rgba; // colour: 4 bytes per texel, expanded by Table 3.23, rows bottom up
   // depth: one value per texel of depth_size bits, as a depth buffer of that many bits stores
   // it (sampler.h depth_texel_max), so that framebuffer objects render into it directly

@@ -136,12 +136,18 @@ TEST_F(FboTest, RenderbufferErrorsAndQueries) {
   struct Case {
     GLenum format;
     GLint r, a, d, s;
-  } cases[] = {{GL_RGBA8, 8, 8, 0, 0},         {GL_RGB5, 5, 0, 0, 0},
-               {GL_RGBA4, 4, 4, 0, 0},         {GL_ALPHA8, 0, 8, 0, 0},
-               {GL_LUMINANCE8, 8, 0, 0, 0},    {GL_INTENSITY8, 8, 8, 0, 0},
-               {GL_DEPTH_COMPONENT16, 0, 0, 16, 0}, {GL_DEPTH_COMPONENT24, 0, 0, 24, 0},
-               {GL_DEPTH_COMPONENT32, 0, 0, 32, 0}, {GL_STENCIL_INDEX8, 0, 0, 0, 8},
-               {GL_DEPTH24_STENCIL8, 0, 0, 24, 8}, {GL_DEPTH_STENCIL, 0, 0, 24, 8}};
+  } cases[] = {{GL_RGBA8, 8, 8, 0, 0},
+               {GL_RGB5, 5, 0, 0, 0},
+               {GL_RGBA4, 4, 4, 0, 0},
+               {GL_ALPHA8, 0, 8, 0, 0},
+               {GL_LUMINANCE8, 8, 0, 0, 0},
+               {GL_INTENSITY8, 8, 8, 0, 0},
+               {GL_DEPTH_COMPONENT16, 0, 0, 16, 0},
+               {GL_DEPTH_COMPONENT24, 0, 0, 24, 0},
+               {GL_DEPTH_COMPONENT32, 0, 0, 32, 0},
+               {GL_STENCIL_INDEX8, 0, 0, 0, 8},
+               {GL_DEPTH24_STENCIL8, 0, 0, 24, 8},
+               {GL_DEPTH_STENCIL, 0, 0, 24, 8}};
   for (const Case& c : cases) {
     glRenderbufferStorage(GL_RENDERBUFFER, c.format, 5, 3);
     EXPECT_ERROR(GL_NO_ERROR);
@@ -239,15 +245,13 @@ TEST_F(FboTest, Completeness) {
   glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, 0);
   glDrawBuffer(GL_COLOR_ATTACHMENT0);
   glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, t, 1);
-  EXPECT_EQ(glCheckFramebufferStatus(GL_FRAMEBUFFER),
-            GLenum(GL_FRAMEBUFFER_INCOMPLETE_ATTACHMENT));
+  EXPECT_EQ(glCheckFramebufferStatus(GL_FRAMEBUFFER), GLenum(GL_FRAMEBUFFER_INCOMPLETE_ATTACHMENT));
   glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, t, 0);
   EXPECT_EQ(glCheckFramebufferStatus(GL_FRAMEBUFFER), GLenum(GL_FRAMEBUFFER_COMPLETE));
   // Respecifying the attached image as a depth image makes it incomplete at a colour point.
   glTexImage2D(GL_TEXTURE_2D, 0, GL_DEPTH_COMPONENT, 8, 8, 0, GL_DEPTH_COMPONENT, GL_FLOAT,
                nullptr);
-  EXPECT_EQ(glCheckFramebufferStatus(GL_FRAMEBUFFER),
-            GLenum(GL_FRAMEBUFFER_INCOMPLETE_ATTACHMENT));
+  EXPECT_EQ(glCheckFramebufferStatus(GL_FRAMEBUFFER), GLenum(GL_FRAMEBUFFER_INCOMPLETE_ATTACHMENT));
   EXPECT_ERROR(GL_NO_ERROR);
 }
 
@@ -408,8 +412,8 @@ TEST_F(FboTest, CubeFaces3DSlicesAndLevels) {
   glBindTexture(GL_TEXTURE_3D, vol);
   glTexImage3D(GL_TEXTURE_3D, 0, GL_RGBA8, 4, 4, 3, 0, GL_RGBA, GL_UNSIGNED_BYTE, nullptr);
   framebuffer();
-  glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_CUBE_MAP_NEGATIVE_Y,
-                         cube, 1);
+  glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_CUBE_MAP_NEGATIVE_Y, cube,
+                         1);
   ASSERT_EQ(glCheckFramebufferStatus(GL_FRAMEBUFFER), GLenum(GL_FRAMEBUFFER_COMPLETE));
   GLint v = 0;
   glGetFramebufferAttachmentParameteriv(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0,
@@ -737,16 +741,14 @@ TEST_F(PackedDepthStencilTest, TexturesPixelTransfersAndAttachments) {
   glGetTexImage(GL_TEXTURE_2D, 0, GL_DEPTH_STENCIL, GL_UNSIGNED_INT_24_8, back.data());
   EXPECT_EQ(back, texels);
   // Errors: the type and format go together, and with the internal format.
-  glTexImage2D(GL_TEXTURE_2D, 0, GL_DEPTH24_STENCIL8, 4, 4, 0, GL_DEPTH_STENCIL,
-               GL_UNSIGNED_INT, nullptr);
+  glTexImage2D(GL_TEXTURE_2D, 0, GL_DEPTH24_STENCIL8, 4, 4, 0, GL_DEPTH_STENCIL, GL_UNSIGNED_INT,
+               nullptr);
   EXPECT_EQ(glGetError(), GLenum(GL_INVALID_ENUM));
   glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA, 4, 4, 0, GL_RGBA, GL_UNSIGNED_INT_24_8, nullptr);
   EXPECT_EQ(glGetError(), GLenum(GL_INVALID_OPERATION));
-  glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA, 4, 4, 0, GL_DEPTH_STENCIL, GL_UNSIGNED_INT_24_8,
-               nullptr);
+  glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA, 4, 4, 0, GL_DEPTH_STENCIL, GL_UNSIGNED_INT_24_8, nullptr);
   EXPECT_EQ(glGetError(), GLenum(GL_INVALID_OPERATION));
-  glTexImage2D(GL_TEXTURE_2D, 0, GL_DEPTH24_STENCIL8, 4, 4, 0, GL_STENCIL_INDEX, GL_INT,
-               nullptr);
+  glTexImage2D(GL_TEXTURE_2D, 0, GL_DEPTH24_STENCIL8, 4, 4, 0, GL_STENCIL_INDEX, GL_INT, nullptr);
   EXPECT_EQ(glGetError(), GLenum(GL_INVALID_OPERATION));
   glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, 4, 4, 0, GL_STENCIL_INDEX, GL_INT, nullptr);
   EXPECT_EQ(glGetError(), GLenum(GL_INVALID_ENUM));
@@ -841,8 +843,8 @@ protected:
     glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, rb[0]);
     glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_STENCIL_ATTACHMENT, GL_RENDERBUFFER, rb[1]);
     // A 2x2 checker of four colours, each a 4x4 block.
-    const GLubyte colors[4][4] = {{255, 0, 0, 255}, {0, 255, 0, 255}, {0, 0, 255, 255},
-                                  {255, 255, 255, 255}};
+    const GLubyte colors[4][4] = {
+        {255, 0, 0, 255}, {0, 255, 0, 255}, {0, 0, 255, 255}, {255, 255, 255, 255}};
     std::vector<GLubyte> px(8 * 8 * 4);
     for (int y = 0; y < 8; ++y)
       for (int x = 0; x < 8; ++x)

@@ -440,6 +440,7 @@ TEST(Fragment, KeySelection) {
   fb.color = pixel;
   fb.depth = &depth;
   fb.depth_bits = 24;
+  fb.depth_stride = 1;
   RasterState rs;
   StateKey k = make_state_key(rs, fb);
   EXPECT_EQ(k.depth_path(), DepthPath::Off);

@@ -337,6 +337,7 @@ TEST(Raster, EdgeBlocksRespectFramebufferBounds) {
       fb.color_stride = w * 4;
       fb.depth = depth.data();
       fb.depth_bits = 24;
+      fb.depth_stride = w;
       RasterState rs;
       rs.depth_test = true;
       DrawCall dc{&rs, &fb};

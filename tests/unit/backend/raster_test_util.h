@@ -39,10 +39,12 @@ struct TestFb {
       depth_mem.assign(static_cast<size_t>(w) * h, fb_depth_max(depth_bits));
       fb.depth = depth_mem.data();
       fb.depth_bits = depth_bits;
+      fb.depth_stride = w;
     }
     stencil_mem.assign(static_cast<size_t>(w) * h, 0);
     fb.stencil = stencil_mem.data();
     fb.stencil_bits = 8;
+    fb.stencil_stride = w;
   }
 
   static uint32_t fb_depth_max(int bits) { return bits >= 32 ? 0xffffffffu : (1u << bits) - 1; }

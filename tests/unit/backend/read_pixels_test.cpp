@@ -39,8 +39,10 @@ struct TestFb {
     }
     fb.depth = depth.data();
     fb.depth_bits = depth_bits;
+    fb.depth_stride = w;
     fb.stencil = stencil.data();
     fb.stencil_bits = 8;
+    fb.stencil_stride = w;
   }
 
   void set(int x, int y, uint8_t r, uint8_t g, uint8_t b, uint8_t a) {

@@ -43,7 +43,8 @@ struct Texture {
       data.emplace_back(static_cast<size_t>(lw * lh * 4));
       for (uint8_t& b : data.back())
         b = static_cast<uint8_t>(rng.next() >> 24);
-      view.levels[0][level] = SamplerLevel{.rgba = data.back().data(), .width = lw, .height = lh, .depth = 1};
+      view.levels[0][level] =
+          SamplerLevel{.rgba = data.back().data(), .width = lw, .height = lh, .depth = 1};
       if (lw == 1 && lh == 1) break;
     }
     view.max_level = level;
