@@ -364,9 +364,8 @@ void stippled_smooth_line(const DrawCall& dc, const FragCtx& ctx, const PVertex&
     for (int k = 0; k < 3; ++k)
       v.win[k] = static_cast<float>(a.win[k] + t * (b.win[k] - a.win[k]));
     for (int k = 0; k < 4; ++k)
-      v.attr[kAttrColor + k] =
-          static_cast<float>(a.attr[kAttrColor + k] +
-                             t * (b.attr[kAttrColor + k] - a.attr[kAttrColor + k]));
+      v.attr[kAttrColor + k] = static_cast<float>(
+          a.attr[kAttrColor + k] + t * (b.attr[kAttrColor + k] - a.attr[kAttrColor + k]));
   };
   const int64_t steps = static_cast<int64_t>(std::ceil(len));
   const int64_t fac = modes.line_stipple_factor;

@@ -46,7 +46,7 @@ struct Result {
   int instructions;
 };
 
-long g_fixed_blocks = 0; // --blocks: run exactly this many (for instruction counting)
+long g_fixed_blocks = 0;            // --blocks: run exactly this many (for instruction counting)
 std::vector<int> g_quads = {16, 4}; // --quads N,N,...: quads per block
 
 Result run(const char* src, int quads, SimdLevel level, double seconds) {
