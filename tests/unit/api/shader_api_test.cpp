@@ -82,6 +82,26 @@ TEST_F(ShaderTest, CompileStatusAndLog) {
   EXPECT_EQ(err(), static_cast<GLenum>(GL_NO_ERROR));
 }
 
+// gl_FragDepth and gl_PointCoord are not drawn yet: a program using them fails to link and
+// says why, rather than drawing at the interpolated depth or with a zero coordinate.
+TEST_F(ShaderTest, UnsupportedBuiltinsFailToLinkWithALog) {
+  for (const char* fs :
+       {"void main() { gl_FragColor = vec4(1.0); gl_FragDepth = 0.5; }\n",
+        "#version 120\nvoid main() { gl_FragColor = vec4(gl_PointCoord, 0.0, 1.0); }\n"}) {
+    const GLuint p = glCreateProgram();
+    glAttachShader(p, shader(GL_FRAGMENT_SHADER, fs));
+    glLinkProgram(p);
+    GLint ok = GL_TRUE;
+    glGetProgramiv(p, GL_LINK_STATUS, &ok);
+    EXPECT_EQ(ok, GL_FALSE) << fs;
+    char log[256] = {};
+    glGetProgramInfoLog(p, sizeof log, nullptr, log);
+    EXPECT_NE(std::string(log).find("not supported by Pineda yet"), std::string::npos) << log;
+    glUseProgram(p);
+    EXPECT_EQ(err(), static_cast<GLenum>(GL_INVALID_OPERATION)); // §2.15.3: not linked
+  }
+}
+
 TEST_F(ShaderTest, ObjectNameErrors) {
   const GLuint s = glCreateShader(GL_VERTEX_SHADER);
   const GLuint p = glCreateProgram();
