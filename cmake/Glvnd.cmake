@@ -35,7 +35,8 @@ if(PINEDA_EGL)
     COMMAND ${Python3_EXECUTABLE} ${PINEDA_EGL_GENERATOR} --registry ${PINEDA_EGL_XML}
       --extensions ${PINEDA_EGL_EXTENSIONS} --out-dir ${PINEDA_EGL_GENERATED_DIR}
       --stamp ${PINEDA_EGL_STAMP}
-    DEPENDS ${PINEDA_EGL_GENERATOR} ${PINEDA_EGL_EXTENSIONS} ${PINEDA_EGL_XML}
+    DEPENDS ${PINEDA_EGL_GENERATOR} ${PINEDA_SOURCE_ROOT}/tools/gen/registry_util.py
+      ${PINEDA_EGL_EXTENSIONS} ${PINEDA_EGL_XML}
     COMMENT "Generating the EGL tables from ${PINEDA_EGL_XML}"
     VERBATIM)
   add_custom_target(pineda_egl_generate DEPENDS ${PINEDA_EGL_STAMP})
