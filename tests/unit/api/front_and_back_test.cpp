@@ -138,7 +138,10 @@ protected:
     glPixelZoom(1.0f, 1.0f);
     const GLubyte bits[8] = {0xff, 0x81, 0xa5, 0x99, 0x99, 0xa5, 0x81, 0xff};
     glRasterPos3f(-0.5f, -0.1f, 0.4f);
+    // One byte per row: rows padded to the default alignment of 4 would read past `bits`.
+    glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
     glBitmap(8, 8, 0, 0, 0, 0, bits);
+    glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
     glFinish();
   }
 
