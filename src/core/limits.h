@@ -9,7 +9,21 @@
 namespace pineda {
 
 // ---- vertex processing (Tables 6.36, 6.37) ----
-constexpr int kMaxTexUnits = 4;              // MAX_TEXTURE_UNITS (GL 2.1 §2.7)
+// GL 2.1 §2.7 separates the conventional texture units of fixed-function texturing (their
+// environments and target enables) from the texture coordinate sets (matrices, generation,
+// current coordinates, arrays) and the texture image units (bindings, which samplers name).
+constexpr int kMaxTexUnits = 4;                 // MAX_TEXTURE_UNITS (GL 2.1 §2.7)
+constexpr int kMaxTexCoordSets = 4;             // MAX_TEXTURE_COORDS (GL 2.1 §2.7)
+constexpr int kMaxTextureImageUnits = 16;       // MAX_TEXTURE_IMAGE_UNITS (fragment, §3.11.2)
+constexpr int kMaxVertexTextureImageUnits = 16; // MAX_VERTEX_TEXTURE_IMAGE_UNITS (§2.15.4)
+// MAX_COMBINED_TEXTURE_IMAGE_UNITS (§2.15.4): a program may use all of both stages' units.
+constexpr int kMaxCombinedTextureImageUnits = 32;
+// ActiveTexture's range (§2.7): the larger of the coordinate sets and the image units.
+constexpr int kMaxActiveTexture = kMaxTexCoordSets > kMaxCombinedTextureImageUnits
+                                      ? kMaxTexCoordSets
+                                      : kMaxCombinedTextureImageUnits;
+// Every coordinate set has a conventional unit's state today (current.h, texcoord.h).
+static_assert(kMaxTexCoordSets == kMaxTexUnits);
 constexpr int kMaxLights = 8;                // MAX_LIGHTS (§2.14.1: at least 8)
 constexpr int kMaxClipPlanes = 6;            // MAX_CLIP_PLANES (§2.12: at least 6)
 constexpr size_t kModelviewStackDepth = 32;  // MAX_MODELVIEW_STACK_DEPTH (§2.11.2: at least 32)

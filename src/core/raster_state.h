@@ -116,6 +116,9 @@ struct RasterState {
   // dot(plane, clip) >= 0 for inside.
   uint32_t user_clip_mask = 0; // bit i: plane i enabled
   float user_planes[6][4] = {};
+  // With a vertex shader (GL 2.1 §2.20.3): user_planes are the eye-space planes and each
+  // vertex carries its distances at attr[user_dist + i] (geometry/clip.h); -1 otherwise.
+  int user_dist = -1;
 
   // Polygons (GL 2.1 §3.5)
   bool cull_enabled = false;

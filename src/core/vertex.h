@@ -23,6 +23,10 @@ constexpr int kAttrBackColor2 = 32;                    // two-sided lighting: ba
 constexpr int kAttrVarying0 = 36;
 constexpr int kMaxVaryingAttr = 64;
 constexpr int kMaxAttr = kAttrVarying0 + kMaxVaryingAttr;
+// With a vertex shader and user clip planes, the distance of the vertex's gl_ClipVertex to
+// plane i at kAttrClipDist + i (geometry/clip.h ClipSetup::user_dist): the last floats, free
+// unless the varyings fill them.
+constexpr int kAttrClipDist = kMaxAttr - kMaxClipPlanes;
 
 // Clip code bits (GL 2.1 §2.12). A bit is set when the vertex is outside that half-space.
 enum ClipBit : uint32_t {

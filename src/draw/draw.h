@@ -81,6 +81,10 @@ struct DrawInput {
   const glm::mat4* texture0 = nullptr;
   // A vertex shader runs in place of the fixed-function transform and lighting (§2.20).
   const VertexProgram* vertex_program = nullptr;
+  // Feedback with a vertex shader reports gl_FrontColor and gl_TexCoord[0]; where the shader
+  // does not write them, these values (the current colour and coordinates, as Mesa reports).
+  const float* feedback_color = nullptr;
+  const float* feedback_tex = nullptr;
 };
 
 struct DrawCache; // draw_cache.h

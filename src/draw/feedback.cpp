@@ -151,7 +151,18 @@ void select_feedback_draw(const DrawInput& in, const DrawSources& src, PVertex* 
     return;
   }
   constexpr int kTexEnd = kAttrTex0 + 4;
-  if (records.textured() && rs.attr_count < kTexEnd) {
+  if (in.vertex_program != nullptr) {
+    // GL 2.1 §2.20.2, §5.3: the shader's outputs are the processed vertex (its stage kept the
+    // primary colour and unit 0's coordinates for feedback); the outputs it does not write
+    // report the current values.
+    for (size_t i = 0; i < in.n; ++i) {
+      if (in.feedback_color != nullptr)
+        std::copy(in.feedback_color, in.feedback_color + 4, verts[i].attr + kAttrColor);
+      if (in.feedback_tex != nullptr)
+        std::copy(in.feedback_tex, in.feedback_tex + 4, verts[i].attr + kAttrTex0);
+    }
+    rs.attr_count = std::max(rs.attr_count, kTexEnd);
+  } else if (records.textured() && rs.attr_count < kTexEnd) {
     // Unit 0's coordinates are not live in this draw (texturing is off): compute them here,
     // through the texture matrix (GL 2.1 §2.11.4), for feedback to report.
     const glm::mat4& tm = *in.texture0;

@@ -106,6 +106,9 @@ void init_clip_setup(ClipSetup& cs, const RasterState& rs) {
   int n = rs.attr_count;
   // The back colours are swapped in after clipping.
   if (rs.two_sided && n < kAttrBackColor2 + 4) n = kAttrBackColor2 + 4;
+  // The vertex shader's plane distances are interpolated with the attributes.
+  cs.user_dist = cs.user_mask != 0 ? rs.user_dist : -1;
+  if (cs.user_dist >= 0 && n < cs.user_dist + kMaxClipPlanes) n = cs.user_dist + kMaxClipPlanes;
   cs.lerp_count = n < 0 ? 0 : (n > kMaxAttr ? kMaxAttr : n);
 }
 
@@ -115,9 +118,10 @@ uint32_t clip_code(const ClipSetup& cs, const float* clip) {
   uint32_t m = (!(x + w >= 0.0f) ? kClipLeft : 0u) | (!(w - x >= 0.0f) ? kClipRight : 0u) |
                (!(y + w >= 0.0f) ? kClipBottom : 0u) | (!(w - y >= 0.0f) ? kClipTop : 0u) |
                (!(z + w >= 0.0f) ? kClipNear : 0u) | (!(w - z >= 0.0f) ? kClipFar : 0u);
-  for (uint32_t planes = cs.user_mask; planes != 0; planes &= planes - 1) {
+  for (uint32_t planes = cs.user_dist < 0 ? cs.user_mask : 0u; planes != 0; planes &= planes - 1) {
     const int i = __builtin_ctz(planes);
-    if (!(plane_distance(cs, kFirstUserPlane + i, clip) >= 0.0f)) m |= kClipUser0 << i;
+    const float* q = cs.user[i];
+    if (!(q[0] * x + q[1] * y + q[2] * z + q[3] * w >= 0.0f)) m |= kClipUser0 << i;
   }
   // w <= 0 only survives the frustum tests at the origin, which has no projection; an
   // infinite w would pass every test yet poisons interpolation; a denormal w passes too, but
@@ -142,7 +146,7 @@ bool clip_polygon(const ClipSetup& cs, uint32_t planes, ClipPolygon& poly, ClipS
     const int n = in->n;
     int outside = 0;
     for (int i = 0; i < n; ++i) {
-      d[i] = plane_distance(cs, p, in->v[i]->clip);
+      d[i] = plane_distance(cs, p, *in->v[i]);
       if (!std::isfinite(d[i])) return false; // NaN or infinite input: drop (as Mesa does)
       outside += d[i] < 0.0f;
     }
@@ -205,8 +209,8 @@ bool clip_segment(const ClipSetup& cs, uint32_t planes, const PVertex& a, const 
   int plane0 = -1, plane1 = -1;
   for (const int p : kPlaneOrder) {
     if (!(planes & (1u << p))) continue;
-    const float da = plane_distance(cs, p, a.clip);
-    const float db = plane_distance(cs, p, b.clip);
+    const float da = plane_distance(cs, p, a);
+    const float db = plane_distance(cs, p, b);
     if (!std::isfinite(da) || !std::isfinite(db)) return false;
     if (da < 0.0f && db < 0.0f) return false;
     if (da < 0.0f) {

@@ -43,13 +43,19 @@ struct ClipSetup {
   // Leading attribute floats interpolated at new vertices. Covers the back colours under
   // two-sided lighting even when attr_count does not (they are swapped in after clipping).
   int lerp_count = 4;
+  // With a vertex shader (RasterState::user_dist): `user` holds the planes in eye space, the
+  // vertex stage writes each vertex's distance to enabled plane i at attr[user_dist + i] and
+  // sets its user clip bits; the clipper interpolates and reads those distances. -1: the
+  // planes are in clip space and tested on the clip coordinates.
+  int user_dist = -1;
 };
 
 void init_clip_setup(ClipSetup& cs, const RasterState& rs);
 
-// Signed distance of clip-space point c to plane p; >= 0 is inside. Evaluated exactly as the
-// front end's clip-code tests (a < b rewritten as b - a, whose sign IEEE arithmetic keeps).
-inline float plane_distance(const ClipSetup& cs, int p, const float* c) {
+// Signed distance of vertex v to plane p; >= 0 is inside. Evaluated exactly as the front
+// end's clip-code tests (a < b rewritten as b - a, whose sign IEEE arithmetic keeps).
+inline float plane_distance(const ClipSetup& cs, int p, const PVertex& v) {
+  const float* c = v.clip;
   switch (p) {
   case 0:
     return c[0] + c[3];
@@ -72,6 +78,7 @@ inline float plane_distance(const ClipSetup& cs, int p, const float* c) {
   case 15:
     return cs.gy1 * c[3] - c[1];
   default: {
+    if (cs.user_dist >= 0) return v.attr[cs.user_dist + p - kFirstUserPlane];
     const float* q = cs.user[p - kFirstUserPlane];
     return q[0] * c[0] + q[1] * c[1] + q[2] * c[2] + q[3] * c[3];
   }
@@ -80,7 +87,8 @@ inline float plane_distance(const ClipSetup& cs, int p, const float* c) {
 
 // The clip code of a clip-space position (ClipBit set), with NaN outside every plane and a
 // w that is not positive and finite flagged as kClipGuard; the front end's rules (plus the
-// infinite-w case).
+// infinite-w case). Without the user planes when the vertex stage sets their bits
+// (user_dist >= 0).
 uint32_t clip_code(const ClipSetup& cs, const float* clip);
 
 // A polygon as the clipper sees it: vertex pointers and, per vertex, the boundary flag of the

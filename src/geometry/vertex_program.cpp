@@ -94,6 +94,13 @@ void run_vertex_program(const VertexProgram& vp, const ClipSetup& cs, const View
     out_ptr[c] = tb.out[c];
   const bool writes_position =
       std::find(writes.begin(), writes.end(), kOutPosition * 4) != writes.end();
+  // GL 2.1 §2.20.3 (§2.12): the user planes clip against gl_ClipVertex in eye space; a
+  // shader that does not write it clips against gl_Position, as Mesa does.
+  const bool user_planes = cs.user_dist >= 0 && cs.user_mask != 0;
+  const int clip_vertex =
+      std::find(writes.begin(), writes.end(), kOutClipVertex * 4) != writes.end()
+          ? kOutClipVertex * 4
+          : kOutPosition * 4;
   for (size_t b0 = 0; b0 < n; b0 += kBatch) {
     const int count = static_cast<int>(std::min<size_t>(kBatch, n - b0));
     for (int c : reads) {
@@ -130,6 +137,19 @@ void run_vertex_program(const VertexProgram& vp, const ClipSetup& cs, const View
       for (int k = 0; k < 4; ++k)
         p.clip[k] = writes_position ? tb.out[kOutPosition * 4 + k][l] : 0.0f;
       p.clipmask = clip_code(cs, p.clip);
+      if (user_planes) {
+        float cv[4];
+        for (int k = 0; k < 4; ++k)
+          cv[k] = writes_position || clip_vertex != kOutPosition * 4 ? tb.out[clip_vertex + k][l]
+                                                                     : 0.0f;
+        for (uint32_t planes = cs.user_mask; planes != 0; planes &= planes - 1) {
+          const int i = __builtin_ctz(planes);
+          const float* q = cs.user[i];
+          const float d = q[0] * cv[0] + q[1] * cv[1] + q[2] * cv[2] + q[3] * cv[3];
+          p.attr[cs.user_dist + i] = d;
+          if (!(d >= 0.0f)) p.clipmask |= kClipUser0 << i;
+        }
+      }
       if (p.clipmask == 0) to_window(p, view);
       p.edgeflag = in[b0 + l].edge;
       p.point_size = 1.0f;

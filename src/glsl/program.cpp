@@ -670,17 +670,13 @@ std::unique_ptr<Program> Program::link(const std::vector<std::shared_ptr<const S
     impl.vs = shader::Executable::build(vs_ir, shader::Stage::Vertex, &err);
     if (!impl.vs) return fail("ERROR: Linking vertex shader: " + err);
   }
-  // GL 2.1 §2.15.4 (Samplers): samplers per stage and in all.
+  // GL 2.1 §2.15.3 "Samplers", §2.15.4 "Texture Access": the active samplers per stage and in
+  // all; a sampler both stages use counts once in each.
   const size_t vs_samplers = impl.vs ? impl.vs->sampler_words().size() : 0;
   const size_t fs_samplers = impl.fs ? impl.fs->sampler_words().size() : 0;
-  std::set<int> all_samplers;
-  if (impl.vs)
-    all_samplers.insert(impl.vs->sampler_words().begin(), impl.vs->sampler_words().end());
-  if (impl.fs)
-    all_samplers.insert(impl.fs->sampler_words().begin(), impl.fs->sampler_words().end());
   if (static_cast<int>(vs_samplers) > limits.max_vertex_texture_image_units ||
       static_cast<int>(fs_samplers) > limits.max_texture_image_units ||
-      static_cast<int>(all_samplers.size()) > limits.max_combined_texture_image_units)
+      static_cast<int>(vs_samplers + fs_samplers) > limits.max_combined_texture_image_units)
     return fail("ERROR: Linking: too many samplers (vertex " + std::to_string(vs_samplers) +
                 ", fragment " + std::to_string(fs_samplers) + "; limits " +
                 std::to_string(limits.max_vertex_texture_image_units) + ", " +

@@ -56,6 +56,8 @@ struct QueryValues {
   QueryKind kind = QueryKind::kInt;
   int n = 0;
   double v[16] = {};
+  // A query of state the active texture unit lacks (GL 2.1 §6.1.2): INVALID_OPERATION, no values.
+  GLenum error = GL_NO_ERROR;
 
   void add(double x) { v[n++] = x; }
   void ints(std::initializer_list<double> xs) {

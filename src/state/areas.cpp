@@ -49,6 +49,9 @@ bool* capability_flag(Context& ctx, GLenum cap, const Capability** found) {
       if (cap >= c.cap && cap - c.cap < c.count) {
         if (found != nullptr) *found = &c;
         const unsigned unit = c.kind == CapabilityKind::kPerUnit ? ctx.texture.active : 0;
+        // GL 2.1 §2.7: the texture enables are state of the conventional units (and of the
+        // coordinate sets, as many): none for a higher active texture.
+        if (unit >= unsigned(kMaxTexUnits)) return nullptr;
         return c.flag(ctx, cap - c.cap, unit);
       }
   return nullptr;

@@ -103,7 +103,11 @@ bool get_current(Context& ctx, GLenum pname, QueryValues& out) {
     out.normalized(c.normal, 3);
     return true;
   case GL_CURRENT_TEXTURE_COORDS:
-    out.floats(c.tex[ctx.texture.active], 4);
+    // §6.1.2: INVALID_OPERATION for an active texture without a coordinate set.
+    if (ctx.texture.active >= GLuint(kMaxTexCoordSets))
+      out.error = GL_INVALID_OPERATION;
+    else
+      out.floats(c.tex[ctx.texture.active], 4);
     return true;
   case GL_CURRENT_FOG_COORD:
     out.floats({c.fog_coord});
@@ -134,7 +138,10 @@ bool get_current(Context& ctx, GLenum pname, QueryValues& out) {
     out.floats({rp.index});
     return true;
   case GL_CURRENT_RASTER_TEXTURE_COORDS:
-    out.floats(rp.tex[ctx.texture.active], 4);
+    if (ctx.texture.active >= GLuint(kMaxTexCoordSets))
+      out.error = GL_INVALID_OPERATION;
+    else
+      out.floats(rp.tex[ctx.texture.active], 4);
     return true;
   default:
     return false;

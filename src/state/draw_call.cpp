@@ -5,6 +5,7 @@
 #include <bit>
 
 #include "draw/draw.h"
+#include "shader/engine.h"
 #include "state/program_draw.h"
 #include "state/validate.h"
 
@@ -80,6 +81,29 @@ void draw_vertices(Context* ctx, GLenum mode, const InputVertex* verts, size_t n
   RenderModeRecords records(ctx->render_mode);
   in.records = &records;
   in.texture0 = &ctx->texture_matrix[0].top();
+  VertexProgram feedback_program;
+  if (in.vertex_program != nullptr) {
+    // GL 2.1 §5.3 with a vertex shader (§2.20.2): feedback reports gl_FrontColor and
+    // gl_TexCoord[0], whatever the fragment stage reads; the colour sum is not folded in.
+    feedback_program = *in.vertex_program;
+    const shader::Executable& exe = *feedback_program.exe;
+    bool color = false, tex = false;
+    for (int c : exe.outputs_written()) {
+      color |= c / 4 == shader::kOutFrontColor;
+      tex |= c / 4 == shader::kOutTexCoord0;
+    }
+    for (int k = 0; k < 4; ++k) {
+      feedback_program.out_attr[shader::kOutFrontColor * 4 + k] =
+          static_cast<int16_t>(kAttrColor + k);
+      feedback_program.out_attr[shader::kOutTexCoord0 * 4 + k] =
+          static_cast<int16_t>(kAttrTex0 + k);
+    }
+    feedback_program.attr_count = std::max(feedback_program.attr_count, kAttrTex0 + 4);
+    feedback_program.fold_sum = false;
+    in.vertex_program = &feedback_program;
+    if (!color) in.feedback_color = ctx->current.color;
+    if (!tex) in.feedback_tex = ctx->current.tex[0];
+  }
   draw_vertices(ctx->draw, in);
 }
 

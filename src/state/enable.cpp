@@ -17,6 +17,8 @@ void set_capability(const char* func, GLenum cap, bool value, bool client_only) 
   // GL 2.1 §2.8 enables the client arrays with EnableClientState only, but Mesa (the
   // tie-breaker) also takes them in Enable/Disable, and programs rely on it (piglit
   // gl-1.1-color-material-array does glEnable(GL_VERTEX_ARRAY)).
+  if (c != nullptr && flag == nullptr && !client_only)
+    return record_error(ctx, GL_INVALID_OPERATION, func); // a texture enable, §2.7
   if (flag == nullptr || (client_only && c->kind != CapabilityKind::kClient))
     return record_error(ctx, GL_INVALID_ENUM, func, cap);
   if (*flag == value) return;
@@ -39,9 +41,14 @@ void GLAPIENTRY Disable(GLenum cap) {
 GLboolean GLAPIENTRY IsEnabled(GLenum cap) {
   Context* ctx = outside_begin_end("glIsEnabled");
   if (ctx == nullptr) return GL_FALSE;
-  const bool* flag = capability_flag(*ctx, cap);
+  const Capability* c = nullptr;
+  const bool* flag = capability_flag(*ctx, cap, &c);
   if (flag == nullptr) {
-    record_error(ctx, GL_INVALID_ENUM, "glIsEnabled", cap);
+    // A texture enable of an active texture above the conventional units (§2.7).
+    if (c != nullptr)
+      record_error(ctx, GL_INVALID_OPERATION, "glIsEnabled");
+    else
+      record_error(ctx, GL_INVALID_ENUM, "glIsEnabled", cap);
     return GL_FALSE;
   }
   return *flag ? GL_TRUE : GL_FALSE;

@@ -16,8 +16,14 @@ namespace {
 // Fill `out` for pname; false when pname is not a state Pineda has. A capability reads as
 // glIsEnabled does (§6.1.1).
 bool get_values(Context* ctx, GLenum pname, QueryValues& out) {
-  if (const bool* flag = capability_flag(*ctx, pname)) {
+  const Capability* c = nullptr;
+  if (const bool* flag = capability_flag(*ctx, pname, &c)) {
     out.boolean(*flag);
+    return true;
+  }
+  if (c != nullptr) {
+    // A texture enable of an active texture above the conventional units (§2.7, §6.1.2).
+    out.error = GL_INVALID_OPERATION;
     return true;
   }
   for (const StateArea* area : state_areas())
@@ -32,6 +38,10 @@ bool lookup(const char* func, GLenum pname, QueryValues& out, Context** ctx_out)
   *ctx_out = ctx;
   if (!get_values(ctx, pname, out)) {
     record_error(ctx, GL_INVALID_ENUM, func, pname);
+    return false;
+  }
+  if (out.error != GL_NO_ERROR) {
+    record_error(ctx, out.error, func);
     return false;
   }
   return true;

@@ -14,14 +14,20 @@ namespace pineda {
 
 namespace {
 
-MatrixStack& current_stack(Context* ctx) {
+// The stack the matrix commands act on, or null with INVALID_OPERATION: in TEXTURE mode the
+// active texture's coordinate set has one only below MAX_TEXTURE_COORDS (GL 2.1 §2.7).
+MatrixStack* current_stack(Context* ctx, const char* func) {
   switch (ctx->transform.matrix_mode) {
   case GL_PROJECTION:
-    return ctx->projection;
+    return &ctx->projection;
   case GL_TEXTURE:
-    return ctx->texture_matrix[ctx->texture.active];
+    if (ctx->texture.active >= GLuint(kMaxTexCoordSets)) {
+      record_error(ctx, GL_INVALID_OPERATION, func);
+      return nullptr;
+    }
+    return &ctx->texture_matrix[ctx->texture.active];
   default:
-    return ctx->modelview;
+    return &ctx->modelview;
   }
 }
 
@@ -36,13 +42,17 @@ void matrix_changed(Context* ctx) {
 
 void load(const char* func, const glm::mat4& m) {
   PINEDA_CTX_OUTSIDE(func);
-  current_stack(ctx).top() = m;
+  MatrixStack* s = current_stack(ctx, func);
+  if (s == nullptr) return;
+  s->top() = m;
   matrix_changed(ctx);
 }
 
 void mult(const char* func, const glm::mat4& m) {
   PINEDA_CTX_OUTSIDE(func);
-  glm::mat4& top = current_stack(ctx).top();
+  MatrixStack* s = current_stack(ctx, func);
+  if (s == nullptr) return;
+  glm::mat4& top = s->top();
   top = top * m; // GL 2.1 §2.11.2: C' = C * M
   matrix_changed(ctx);
 }
@@ -110,7 +120,15 @@ void put_matrix(QueryValues& out, const glm::mat4& m, bool transpose) {
 
 // Tables 6.7, 6.36, 6.37.
 bool get_transform(Context& ctx, GLenum pname, QueryValues& out) {
-  const MatrixStack& tex = ctx.texture_matrix[ctx.texture.active];
+  // §6.1.2: the texture matrix queries of an active texture without a coordinate set are
+  // INVALID_OPERATION.
+  const bool has_tex = ctx.texture.active < GLuint(kMaxTexCoordSets);
+  const MatrixStack& tex = ctx.texture_matrix[has_tex ? ctx.texture.active : 0];
+  if (!has_tex && (pname == GL_TEXTURE_MATRIX || pname == GL_TRANSPOSE_TEXTURE_MATRIX ||
+                   pname == GL_TEXTURE_STACK_DEPTH)) {
+    out.error = GL_INVALID_OPERATION;
+    return true;
+  }
   switch (pname) {
   case GL_MATRIX_MODE:
     out.ints({double(ctx.transform.matrix_mode)});
@@ -266,7 +284,9 @@ void GLAPIENTRY Frustum(GLdouble l, GLdouble r, GLdouble b, GLdouble t, GLdouble
   m[2][2] = static_cast<float>(-(f + n) / (f - n));
   m[2][3] = -1.0f;
   m[3][2] = static_cast<float>(-2.0 * f * n / (f - n));
-  glm::mat4& top = current_stack(ctx).top();
+  MatrixStack* s = current_stack(ctx, "glFrustum");
+  if (s == nullptr) return;
+  glm::mat4& top = s->top();
   top = top * m;
   matrix_changed(ctx);
 }
@@ -285,7 +305,9 @@ void GLAPIENTRY Ortho(GLdouble l, GLdouble r, GLdouble b, GLdouble t, GLdouble n
   m[3][0] = static_cast<float>(-(r + l) / (r - l));
   m[3][1] = static_cast<float>(-(t + b) / (t - b));
   m[3][2] = static_cast<float>(-(f + n) / (f - n));
-  glm::mat4& top = current_stack(ctx).top();
+  MatrixStack* s = current_stack(ctx, "glOrtho");
+  if (s == nullptr) return;
+  glm::mat4& top = s->top();
   top = top * m;
   matrix_changed(ctx);
 }
@@ -293,7 +315,9 @@ void GLAPIENTRY Ortho(GLdouble l, GLdouble r, GLdouble b, GLdouble t, GLdouble n
 // GL 2.1 §2.11.2: STACK_OVERFLOW / STACK_UNDERFLOW leave the stack unchanged.
 void GLAPIENTRY PushMatrix() {
   PINEDA_CTX_OUTSIDE("glPushMatrix");
-  MatrixStack& s = current_stack(ctx);
+  MatrixStack* stack = current_stack(ctx, "glPushMatrix");
+  if (stack == nullptr) return;
+  MatrixStack& s = *stack;
   if (s.stack.size() >= s.max_depth) {
     record_error(ctx, GL_STACK_OVERFLOW, "glPushMatrix");
     return;
@@ -303,7 +327,9 @@ void GLAPIENTRY PushMatrix() {
 
 void GLAPIENTRY PopMatrix() {
   PINEDA_CTX_OUTSIDE("glPopMatrix");
-  MatrixStack& s = current_stack(ctx);
+  MatrixStack* stack = current_stack(ctx, "glPopMatrix");
+  if (stack == nullptr) return;
+  MatrixStack& s = *stack;
   if (s.stack.size() <= 1) {
     record_error(ctx, GL_STACK_UNDERFLOW, "glPopMatrix");
     return;

@@ -36,8 +36,6 @@ class ShaderSampler;
 constexpr int kMaxVertexAttribs = shader::kMaxVertexAttribs;    // MAX_VERTEX_ATTRIBS
 constexpr int kMaxVaryingFloats = 4 * shader::kMaxVaryingSlots; // MAX_VARYING_FLOATS
 constexpr int kMaxUniformComponents = 4096; // MAX_{VERTEX,FRAGMENT}_UNIFORM_COMPONENTS
-// Texture image units (Table 6.37): every unit is one of the fixed-function units.
-constexpr int kMaxTextureImageUnits = kMaxTexUnits;
 
 // A shader object (§2.15.1).
 struct ShaderObject {

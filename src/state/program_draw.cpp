@@ -546,8 +546,8 @@ void refresh_program(Context* ctx) {
   if (!same || d.sampler_generation != generation || d.sampler_serial != ctx->raster_serial) {
     // The views of the textures bound to the units the samplers name (§2.15.3 samplers).
     ShaderSampler& smp = *d.sampler;
-    for (int u = 0; u < kMaxTexUnits; ++u) {
-      smp.unit_bias[u] = ctx->texture.unit[u].env.lod_bias;
+    for (int u = 0; u < kMaxCombinedTextureImageUnits; ++u) {
+      smp.unit_bias[u] = ctx->texture.lod_bias[u];
       for (int t = 0; t < 4; ++t)
         smp.complete[u][t] = false;
     }
@@ -572,7 +572,8 @@ void refresh_program(Context* ctx) {
       for (int e = 0; e < un.size; ++e) {
         const auto unit =
             static_cast<int32_t>(d.words[static_cast<size_t>(un.word + e * un.stride)]);
-        if (unit < 0 || unit >= kMaxTexUnits || smp.complete[unit][target]) continue;
+        if (unit < 0 || unit >= kMaxCombinedTextureImageUnits || smp.complete[unit][target])
+          continue;
         smp.complete[unit][target] =
             make_sampler_view(*bound_texture(ctx, unit, gl_target), smp.views[unit][target]);
       }

@@ -71,12 +71,18 @@ void derive_raster_state(Context& ctx, uint32_t dirty) {
     rs.viewport.near = static_cast<float>(vp.near);
     rs.viewport.far = static_cast<float>(vp.far);
   }
-  if (dirty & (kDirtyClipPlanes | kDirtyTransform)) {
+  const ProgramDerived& program = *ctx.program_draw;
+  if (dirty & (kDirtyClipPlanes | kDirtyTransform | kDirtyProgram)) {
     // GL 2.1 §2.12: a point is inside a user plane when dot(plane_eye, eye) >= 0. With
     // clip = P * eye that equals dot(plane_eye * P^-1, clip), so the test moves to clip space
-    // and eye coordinates are never computed.
+    // and eye coordinates are never computed. A vertex shader gives the eye coordinates
+    // itself, gl_ClipVertex (§2.20.3): the planes stay in eye space and the vertex stage
+    // hands each vertex's distances to the clipper in the last attribute floats, unless the
+    // varyings take them (then, as without a shader, the test is on the clip coordinates).
     rs.user_clip_mask = 0;
-    const glm::dmat4 inv_p = glm::inverse(glm::dmat4(ctx.projection.top()));
+    rs.user_dist = program.has_vertex && program.attr_count <= kAttrClipDist ? kAttrClipDist : -1;
+    const glm::dmat4 inv_p =
+        rs.user_dist >= 0 ? glm::dmat4(1.0) : glm::inverse(glm::dmat4(ctx.projection.top()));
     for (int i = 0; i < kMaxClipPlanes; ++i) {
       if (!ctx.transform.clip_enabled[i]) continue;
       const double* e = ctx.transform.clip_plane[i];
@@ -124,7 +130,6 @@ void derive_raster_state(Context& ctx, uint32_t dirty) {
   }
   // §2.14.1: back colours are computed and selected only with two-sided lighting on; with a
   // vertex shader, under VERTEX_PROGRAM_TWO_SIDE (§2.20.3).
-  const ProgramDerived& program = *ctx.program_draw;
   if (dirty & (kDirtyLighting | kDirtyTransform | kDirtyProgram))
     rs.two_sided =
         program.has_vertex ? ctx.program.two_side : ctx.lighting.enabled && ctx.lighting.two_side;

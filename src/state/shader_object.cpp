@@ -44,12 +44,16 @@ bool get_program_state(Context& ctx, GLenum pname, QueryValues& out) {
     out.ints({kMaxVaryingFloats});
     return true;
   case GL_MAX_TEXTURE_IMAGE_UNITS:
-  case GL_MAX_COMBINED_TEXTURE_IMAGE_UNITS:
-  case GL_MAX_VERTEX_TEXTURE_IMAGE_UNITS:
     out.ints({kMaxTextureImageUnits});
     return true;
+  case GL_MAX_COMBINED_TEXTURE_IMAGE_UNITS:
+    out.ints({kMaxCombinedTextureImageUnits});
+    return true;
+  case GL_MAX_VERTEX_TEXTURE_IMAGE_UNITS:
+    out.ints({kMaxVertexTextureImageUnits});
+    return true;
   case GL_MAX_TEXTURE_COORDS:
-    out.ints({kMaxTexUnits});
+    out.ints({kMaxTexCoordSets});
     return true;
   default:
     return false;
@@ -76,14 +80,14 @@ glsl::Limits glsl_limits() {
   l.max_lights = kMaxLights;
   l.max_clip_planes = kMaxClipPlanes;
   l.max_texture_units = kMaxTexUnits;
-  l.max_texture_coords = kMaxTexUnits;
+  l.max_texture_coords = kMaxTexCoordSets;
   l.max_vertex_attribs = kMaxVertexAttribs;
   l.max_vertex_uniform_components = kMaxUniformComponents;
   l.max_fragment_uniform_components = kMaxUniformComponents;
   l.max_varying_floats = kMaxVaryingFloats;
-  l.max_vertex_texture_image_units = kMaxTextureImageUnits;
+  l.max_vertex_texture_image_units = kMaxVertexTextureImageUnits;
   l.max_texture_image_units = kMaxTextureImageUnits;
-  l.max_combined_texture_image_units = kMaxTextureImageUnits;
+  l.max_combined_texture_image_units = kMaxCombinedTextureImageUnits;
   l.max_draw_buffers = 1;
   return l;
 }
@@ -180,13 +184,13 @@ bool validate(const ProgramObject& p, std::string& log) {
     return false;
   }
   const LinkedProgram& lp = *p.active;
-  GLenum unit_type[kMaxTextureImageUnits] = {};
+  GLenum unit_type[kMaxCombinedTextureImageUnits] = {};
   for (const glsl::ActiveUniform& u : lp.program->uniforms()) {
     if (!is_sampler_type(u.type)) continue;
     for (int e = 0; e < u.size; ++e) {
       const auto unit =
           static_cast<int32_t>(lp.uniforms[static_cast<size_t>(u.word + e * u.stride)]);
-      if (unit < 0 || unit >= kMaxTextureImageUnits) continue;
+      if (unit < 0 || unit >= kMaxCombinedTextureImageUnits) continue;
       if (unit_type[unit] != 0 && unit_type[unit] != u.type) {
         log = "samplers of different types use texture image unit " + std::to_string(unit) + "\n";
         return false;

@@ -42,6 +42,18 @@ TexUnit& active_unit(Context* ctx) {
   return ctx->texture.unit[ctx->texture.active];
 }
 
+// GL 2.1 §2.7: the active texture selects a texture coordinate set, a texture image unit and,
+// for fixed-function texturing, a conventional unit. Commands on state the active one lacks are
+// INVALID_OPERATION: TexEnv's environment and point sprite coordinate replacement (MAX_TEXTURE_
+// UNITS, as Mesa limits them), TexGen (MAX_TEXTURE_COORDS); TEXTURE_FILTER_CONTROL is image
+// unit state, which every active texture has.
+bool env_unit_ok(Context* ctx, GLenum target, const char* func) {
+  if (target == GL_TEXTURE_FILTER_CONTROL || ctx->texture.active < GLuint(kMaxTexUnits))
+    return true;
+  record_error(ctx, GL_INVALID_OPERATION, func);
+  return false;
+}
+
 // ---- texture environment (GL 2.1 §3.8.13) ----
 
 bool valid_env_mode(GLenum m) {
@@ -154,14 +166,16 @@ bool valid_env_enum(int kind, GLenum v) {
 void tex_env(const char* func, GLenum target, GLenum pname, const double* v, const float* color,
              bool vector) {
   PINEDA_CTX_OUTSIDE(func);
-  TexEnv& e = active_unit(ctx).env;
+  if (!env_unit_ok(ctx, target, func)) return;
   if (target == GL_TEXTURE_FILTER_CONTROL) {
     if (pname != GL_TEXTURE_LOD_BIAS) return record_error(ctx, GL_INVALID_ENUM, func, pname);
     const auto bias = static_cast<float>(v[0]);
-    if (e.lod_bias == bias) return;
-    e.lod_bias = bias;
+    float& unit_bias = ctx->texture.lod_bias[ctx->texture.active];
+    if (unit_bias == bias) return;
+    unit_bias = bias;
     return mark_dirty(ctx, kDirtyTexture);
   }
+  TexEnv& e = active_unit(ctx).env;
   if (target == GL_POINT_SPRITE) {
     // GL 2.1 §3.3, §3.8.13: COORD_REPLACE of the active unit, TRUE or FALSE (another value is
     // INVALID_VALUE, as in Mesa). It is point state (Table 6.12).
@@ -206,15 +220,16 @@ int get_tex_env(const char* func, GLenum target, GLenum pname, double* out, bool
   if (ctx == nullptr) return 0;
   *ctx_out = ctx;
   *is_color = false;
-  TexEnv& e = active_unit(ctx).env;
+  if (!env_unit_ok(ctx, target, func)) return 0;
   if (target == GL_TEXTURE_FILTER_CONTROL) {
     if (pname != GL_TEXTURE_LOD_BIAS) {
       record_error(ctx, GL_INVALID_ENUM, func, pname);
       return 0;
     }
-    out[0] = e.lod_bias;
+    out[0] = ctx->texture.lod_bias[ctx->texture.active];
     return 1;
   }
+  TexEnv& e = active_unit(ctx).env;
   if (target == GL_POINT_SPRITE) {
     if (pname != GL_COORD_REPLACE) {
       record_error(ctx, GL_INVALID_ENUM, func, pname);
@@ -284,6 +299,8 @@ void tex_gen(const char* func, GLenum coord, GLenum pname, const double* v, bool
   PINEDA_CTX_OUTSIDE(func);
   const int c = gen_coord(coord);
   if (c < 0) return record_error(ctx, GL_INVALID_ENUM, func, coord);
+  if (ctx->texture.active >= GLuint(kMaxTexCoordSets))
+    return record_error(ctx, GL_INVALID_OPERATION, func);
   TexGenCoord& g = active_unit(ctx).gen[c];
   if (pname == GL_TEXTURE_GEN_MODE) {
     const double d = v[0];
@@ -320,6 +337,10 @@ int get_tex_gen(const char* func, GLenum coord, GLenum pname, double* out, Conte
     record_error(ctx, GL_INVALID_ENUM, func, coord);
     return 0;
   }
+  if (ctx->texture.active >= GLuint(kMaxTexCoordSets)) {
+    record_error(ctx, GL_INVALID_OPERATION, func);
+    return 0;
+  }
   const TexGenCoord& g = active_unit(ctx).gen[c];
   switch (pname) {
   case GL_TEXTURE_GEN_MODE:
@@ -345,7 +366,7 @@ inline void multi_texcoord(GLenum target, float s, float t, float r, float q) {
   Context* ctx = current_context();
   if (ctx == nullptr) return;
   // §2.7: target is TEXTUREi for a unit that exists; otherwise INVALID_ENUM.
-  if (target < GL_TEXTURE0 || target >= GL_TEXTURE0 + kMaxTexUnits)
+  if (target < GL_TEXTURE0 || target >= GL_TEXTURE0 + kMaxTexCoordSets)
     return record_error(ctx, GL_INVALID_ENUM, "glMultiTexCoord", target);
   float* tc = ctx->current.tex[target - GL_TEXTURE0];
   tc[0] = s, tc[1] = t, tc[2] = r, tc[3] = q;
@@ -413,7 +434,7 @@ namespace exec {
 // GL 2.1 §2.7, §3.8: the unit that texture state commands address.
 void GLAPIENTRY ActiveTexture(GLenum texture) {
   PINEDA_CTX_OUTSIDE("glActiveTexture");
-  if (texture < GL_TEXTURE0 || texture >= GL_TEXTURE0 + kMaxTexUnits)
+  if (texture < GL_TEXTURE0 || texture >= GL_TEXTURE0 + kMaxActiveTexture)
     return record_error(ctx, GL_INVALID_ENUM, "glActiveTexture", texture);
   ctx->texture.active = texture - GL_TEXTURE0;
 }
@@ -422,7 +443,7 @@ void GLAPIENTRY ActiveTexture(GLenum texture) {
 // commands address.
 void GLAPIENTRY ClientActiveTexture(GLenum texture) {
   PINEDA_CTX_OUTSIDE("glClientActiveTexture");
-  if (texture < GL_TEXTURE0 || texture >= GL_TEXTURE0 + kMaxTexUnits)
+  if (texture < GL_TEXTURE0 || texture >= GL_TEXTURE0 + kMaxTexCoordSets)
     return record_error(ctx, GL_INVALID_ENUM, "glClientActiveTexture", texture);
   ctx->arrays.client_active_texture = texture - GL_TEXTURE0;
 }

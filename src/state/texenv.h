@@ -34,7 +34,6 @@ struct TexEnv {
   GLenum op_rgb[3] = {GL_SRC_COLOR, GL_SRC_COLOR, GL_SRC_ALPHA};
   GLenum op_alpha[3] = {GL_SRC_ALPHA, GL_SRC_ALPHA, GL_SRC_ALPHA};
   float rgb_scale = 1.0f, alpha_scale = 1.0f;
-  float lod_bias = 0.0f; // TEXTURE_FILTER_CONTROL / TEXTURE_LOD_BIAS
 };
 
 struct TexUnit {
@@ -52,8 +51,10 @@ struct TexUnit {
 
 // TEXTURE_BIT: Tables 6.15-6.19 but the bindings and the objects' state.
 struct TextureGroup {
-  GLuint active = 0; // ACTIVE_TEXTURE - TEXTURE0
+  GLuint active = 0; // ACTIVE_TEXTURE - TEXTURE0, below kMaxActiveTexture
   TexUnit unit[kMaxTexUnits];
+  // TEXTURE_FILTER_CONTROL's TEXTURE_LOD_BIAS (§3.8.8) of each texture image unit.
+  float lod_bias[kMaxCombinedTextureImageUnits] = {};
 };
 
 // Derived at draw time from the texture units, the objects they use, fog and lighting (the

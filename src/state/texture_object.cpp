@@ -271,7 +271,7 @@ TextureState::TextureState() {
 const TextureObject* bound_texture(const Context* ctx, int unit, GLenum target) {
   const int ti = texture_target_index(target);
   const int t = ti < 0 ? kTex2D : ti;
-  const int u = unit >= 0 && unit < kMaxTexUnits ? unit : 0;
+  const int u = unit >= 0 && unit < kMaxCombinedTextureImageUnits ? unit : 0;
   const GLuint name = ctx->texobj.bound[u][t];
   if (name != 0) {
     auto it = ctx->shared->textures.find(name);
@@ -287,7 +287,7 @@ namespace {
 class SavedTextureObjects final : public SavedAttrib {
 public:
   explicit SavedTextureObjects(const Context& ctx) {
-    for (int u = 0; u < kMaxTexUnits; ++u)
+    for (int u = 0; u < kMaxCombinedTextureImageUnits; ++u)
       for (int t = 0; t < kTexTargetCount; ++t) {
         bound_[u][t] = ctx.texobj.bound[u][t];
         params_[u][t] = bound_texture(&ctx, u, kTargets[t])->params;
@@ -296,7 +296,7 @@ public:
   // §6.1.14: popping TEXTURE_BIT rebinds the saved names and restores the saved parameters of
   // those objects; an object deleted in between is not recreated (its binding reverts to 0).
   void restore(Context& ctx) const override {
-    for (int u = 0; u < kMaxTexUnits; ++u)
+    for (int u = 0; u < kMaxCombinedTextureImageUnits; ++u)
       for (int t = 0; t < kTexTargetCount; ++t) {
         const GLuint name = bound_[u][t];
         TextureObject* tex = name == 0 ? ctx.texobj.defaults[t].get() : lookup(&ctx, name);
@@ -307,8 +307,8 @@ public:
   }
 
 private:
-  GLuint bound_[kMaxTexUnits][kTexTargetCount];
-  TexParams params_[kMaxTexUnits][kTexTargetCount];
+  GLuint bound_[kMaxCombinedTextureImageUnits][kTexTargetCount];
+  TexParams params_[kMaxCombinedTextureImageUnits][kTexTargetCount];
 };
 
 std::unique_ptr<SavedAttrib> save_objects(const Context& ctx) {

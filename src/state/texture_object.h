@@ -72,7 +72,7 @@ enum TexTargetIndex : int { kTex1D = 0, kTex2D, kTex3D, kTexCube, kTexTargetCoun
 struct TextureState {
   TextureState();
   std::unique_ptr<TextureObject> defaults[kTexTargetCount];
-  GLuint bound[kMaxTexUnits][kTexTargetCount] = {};
+  GLuint bound[kMaxCombinedTextureImageUnits][kTexTargetCount] = {};
   // Proxy targets keep only level state (sizes, formats), never texels.
   std::unique_ptr<TextureObject> proxies[kTexTargetCount];
 };

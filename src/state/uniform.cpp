@@ -154,7 +154,7 @@ void load_vectors(Context* ctx, const Command& cmd, GLint location, GLsizei coun
   const TypeInfo t = type_info(u->type);
   if (t.base == Base::Sampler) {
     for (GLsizei e = 0; e < count; ++e)
-      if (v[e] < T(0) || v[e] >= T(kMaxTextureImageUnits))
+      if (v[e] < T(0) || v[e] >= T(kMaxCombinedTextureImageUnits))
         return record_error(ctx, GL_INVALID_VALUE, cmd.name);
   }
   const int elements = std::min(static_cast<int>(count), u->size - loc->element);

@@ -47,10 +47,10 @@ uint8_t source_index(GLenum src, int unit) {
   return 6;
 }
 
-void setup_unit(ShadeUnit& su, const TexEnv& e, int unit, GLenum target) {
+void setup_unit(ShadeUnit& su, const TexEnv& e, float bias, int unit, GLenum target) {
   su.index = unit;
   su.dims = lod_dims(target);
-  su.bias = e.lod_bias;
+  su.bias = bias;
   su.mode = e.mode;
   for (int k = 0; k < 4; ++k)
     su.color[k] = e.color[k];
@@ -139,7 +139,7 @@ void validate_texpipe(Context& context, uint32_t) {
     ShadeUnit& su = ss.unit[ss.unit_count];
     // §3.8.15: a unit whose texture is not complete behaves as if texturing were disabled.
     if (!make_sampler_view(*bound_texture(ctx, u, target), su.view)) continue;
-    setup_unit(su, ctx->texture.unit[u].env, u, target);
+    setup_unit(su, ctx->texture.unit[u].env, ctx->texture.lod_bias[u], u, target);
     ss.slot_of_unit[u] = ss.unit_count++;
     units |= 1u << u;
   }

@@ -57,8 +57,8 @@ void quad_lambdas(const SamplerView& v, shader::TexTarget target, int lanes, con
 void ShaderSampler::sample(const shader::TexRequest& req) {
   const int n = std::min(req.lanes, kMaxSampleBatch);
   const int target = static_cast<int>(req.target);
-  const bool ok = req.unit >= 0 && req.unit < kMaxTexUnits && target >= 0 && target < 4 &&
-                  complete[req.unit][target];
+  const bool ok = req.unit >= 0 && req.unit < kMaxCombinedTextureImageUnits && target >= 0 &&
+                  target < 4 && complete[req.unit][target];
   if (!ok) {
     // An incomplete texture (or a unit with none) returns (0, 0, 0, 1) (§3.8.10 as GL 3.x
     // states it; what llvmpipe does).

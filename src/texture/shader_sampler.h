@@ -15,9 +15,10 @@ class ShaderSampler final : public shader::TextureSampler {
 public:
   // The view of the object bound to each unit's target (TexTarget order: 1D, 2D, 3D, cube),
   // when it is complete; an incomplete texture samples as (0, 0, 0, 1).
-  SamplerView views[kMaxTexUnits][4];
-  bool complete[kMaxTexUnits][4] = {};
-  float unit_bias[kMaxTexUnits] = {}; // each unit's TEXTURE_LOD_BIAS (§3.8.8)
+  // Every texture image unit a sampler may name (MAX_COMBINED_TEXTURE_IMAGE_UNITS, §2.15.4).
+  SamplerView views[kMaxCombinedTextureImageUnits][4];
+  bool complete[kMaxCombinedTextureImageUnits][4] = {};
+  float unit_bias[kMaxCombinedTextureImageUnits] = {}; // TEXTURE_LOD_BIAS (§3.8.8)
 
   void sample(const shader::TexRequest& req) override;
 };

@@ -99,7 +99,7 @@ void expect_rasterizable(const ClipSetup& cs, uint32_t planes, const PVertex* co
     for (int pl = 0; pl < kNumClipPlanes; ++pl)
       if (planes & (1u << pl)) {
         // User planes have coefficients up to 1, so rounding scales with the coordinates.
-        ASSERT_GE(plane_distance(cs, pl, p.clip), -1e-5f * scale)
+        ASSERT_GE(plane_distance(cs, pl, p), -1e-5f * scale)
             << "plane " << pl << " iteration " << iter;
       }
   }

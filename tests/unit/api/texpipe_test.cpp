@@ -23,7 +23,8 @@ TEST_F(TexPipeTest, ActiveTextureUnitsAndLimits) {
   glActiveTexture(GL_TEXTURE2);
   glGetIntegerv(GL_ACTIVE_TEXTURE, &v);
   EXPECT_EQ(v, GL_TEXTURE2);
-  glActiveTexture(GL_TEXTURE0 + 4);
+  // GL 2.1 §2.7: up to the larger of MAX_TEXTURE_COORDS and MAX_COMBINED_TEXTURE_IMAGE_UNITS.
+  glActiveTexture(GL_TEXTURE0 + 32);
   EXPECT_EQ(err(), GLenum(GL_INVALID_ENUM));
   glClientActiveTexture(GL_TEXTURE3);
   glGetIntegerv(GL_CLIENT_ACTIVE_TEXTURE, &v);

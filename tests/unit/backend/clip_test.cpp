@@ -69,7 +69,7 @@ void expect_inside(const ClipSetup& cs, uint32_t planes, const ClipPolygon& p) {
         std::fabs(v.clip[0]) + std::fabs(v.clip[1]) + std::fabs(v.clip[2]) + std::fabs(v.clip[3]);
     for (int pl = 0; pl < kNumClipPlanes; ++pl) {
       if (planes & (1u << pl)) {
-        EXPECT_GE(plane_distance(cs, pl, v.clip), -1e-5f * scale) << pl;
+        EXPECT_GE(plane_distance(cs, pl, v), -1e-5f * scale) << pl;
       }
     }
     for (int k = 0; k < 4; ++k)
@@ -116,7 +116,7 @@ TEST(Clip, EveryFrustumPlaneEveryInOutCombination) {
       // New vertices lie exactly on the plane.
       int on_plane = 0;
       for (int i = 0; i < poly.n; ++i)
-        if (plane_distance(cs, p, poly.v[i]->clip) == 0.0f) ++on_plane;
+        if (plane_distance(cs, p, *poly.v[i]) == 0.0f) ++on_plane;
       EXPECT_EQ(on_plane, n_out == 0 ? 0 : 2);
       if (n_out == 0) {
         for (int i = 0; i < 3; ++i)
@@ -153,6 +153,40 @@ TEST(Clip, UserPlanesEveryInOutCombination) {
       expect_inside(cs, planes, poly);
     }
     rs.user_planes[u][0] = rs.user_planes[u][1] = rs.user_planes[u][3] = 0.0f;
+  }
+}
+
+// With a vertex shader the user planes cut where the distances the vertex stage computed
+// from gl_ClipVertex say (GL 2.1 §2.20.3), whatever the clip coordinates: the clipper reads
+// and interpolates them, and new vertices lie at distance zero.
+TEST(Clip, UserPlaneDistancesFromTheVertexStage) {
+  RasterState rs = make_state();
+  rs.user_clip_mask = 1u << 2;
+  rs.user_dist = kAttrClipDist;
+  rs.user_planes[2][0] = 1.0f; // would keep the right side if tested on the clip coordinates
+  ClipSetup cs;
+  init_clip_setup(cs, rs);
+  EXPECT_EQ(cs.user_dist, kAttrClipDist);
+  EXPECT_GE(cs.lerp_count, kAttrClipDist + kMaxClipPlanes);
+  PVertex v[3] = {make_vertex(cs, -0.5f, -0.5f, 0, 1), make_vertex(cs, 0.5f, -0.5f, 0, 1),
+                  make_vertex(cs, 0.0f, 0.5f, 0, 1)};
+  // The clip codes leave the user planes to the vertex stage.
+  for (const PVertex& p : v)
+    EXPECT_EQ(p.clipmask, 0u);
+  // Distances 0.5 - 2x: the part left of x = 0.25 stays.
+  for (PVertex& p : v) {
+    p.attr[kAttrClipDist + 2] = 0.5f - 2.0f * p.clip[0];
+    if (p.attr[kAttrClipDist + 2] < 0.0f) p.clipmask |= kClipUser0 << 2;
+  }
+  const uint32_t planes = planes_of(v[0], v[1], v[2]);
+  EXPECT_EQ(planes, 1u << (kFirstUserPlane + 2));
+  ClipPolygon poly = make_poly(v[0], v[1], v[2]);
+  ClipScratch scratch;
+  ASSERT_TRUE(clip_polygon(cs, planes, poly, scratch));
+  EXPECT_EQ(poly.n, 4);
+  for (int i = 0; i < poly.n; ++i) {
+    EXPECT_LE(poly.v[i]->clip[0], 0.25f + 1e-6f) << i;
+    EXPECT_GE(poly.v[i]->attr[kAttrClipDist + 2], -1e-6f) << i;
   }
 }
 
