@@ -82,6 +82,17 @@ BlockFn select_block_fn(const StateKey& key, ShadePath shade) {
 void prepare_fragments(const RasterState& rs, const Framebuffer& fb, FragCtx& ctx) {
   ctx.key = make_state_key(rs, fb);
   const StateKey& k = ctx.key;
+  const FragmentProgram* prog = rs.shade != nullptr ? rs.shade->program : nullptr;
+  ctx.color_output = fb.color_output;
+  ctx.alpha_test_color0 = false;
+  // §4.1.4: with several fragment colours the alpha test takes colour zero's alpha; a pass of
+  // another colour has the fragment stage test it (shade_program.cpp).
+  if (k.alpha_test && prog != nullptr && prog->frag_data && fb.color_output != 0) {
+    ctx.alpha_test_color0 = true;
+    ctx.alpha_func = depth_func_bits(rs.alpha_func);
+    ctx.alpha_ref = color_to_unorm8(rs.alpha_ref);
+    ctx.key.alpha_test = false;
+  }
   ctx.color = fb.color;
   ctx.color_stride = fb.color_stride;
   ctx.depth = fb.depth;
@@ -127,10 +138,11 @@ void prepare_fragments(const RasterState& rs, const Framebuffer& fb, FragCtx& ct
   ctx.needs_color = k.color_path() != ColorPath::None || k.alpha_test;
   // A fragment shader that discards decides which fragments reach the depth and stencil
   // tests even when no colour is written (§3.11.2).
-  const bool kills =
-      rs.shade != nullptr && rs.shade->program != nullptr && rs.shade->program->discards;
-  ctx.shade = ctx.needs_color || kills ? rs.shade : nullptr;
-  ctx.late_depth = kills;
+  const bool kills = (prog != nullptr && prog->discards) || ctx.alpha_test_color0;
+  // §3.11.2: gl_FragDepth replaces the fragment's depth for the depth test and write.
+  ctx.shader_depth = prog != nullptr && prog->writes_depth && k.depth_test;
+  ctx.shade = ctx.needs_color || kills || ctx.shader_depth ? rs.shade : nullptr;
+  ctx.late_depth = kills || ctx.shader_depth;
   ctx.needs_depth = k.depth_test;
   ctx.noop = (!ctx.needs_color && !ctx.needs_depth && !k.stencil_test && !k.count_samples) ||
              ctx.clip_x0 > ctx.clip_x1 || ctx.clip_y0 > ctx.clip_y1;

@@ -97,8 +97,18 @@ struct FragCtx {
   // Texturing, colour sum and fog per fragment (fragment/shade.h); set when the draw has
   // texturing or fog on and reads colour. Primitives then run ShadePath::PerFragment.
   const ShadeSetup* shade = nullptr;
-  // The fragment shader may discard fragments: the depth test waits for it (§3.11.2).
+  // The fragment shader may discard fragments or writes gl_FragDepth: the depth test waits
+  // for it (§3.11.2).
   bool late_depth = false;
+  // The fragment shader writes gl_FragDepth and the depth test is on: the PerFragment
+  // instances test and store the shader's depth, and no block is rejected before shading.
+  bool shader_depth = false;
+  // The draw buffer this pass writes (Framebuffer::color_output): a shader writing
+  // gl_FragData[n] gives buffer n its colour n.
+  int color_output = 0;
+  // The alpha test of a pass writing gl_FragData[n], n > 0: it tests colour zero's alpha
+  // (§4.1.4), so the fragment stage runs it (alpha_func, alpha_ref) and the key has it off.
+  bool alpha_test_color0 = false;
   // Fragments that passed the stencil and depth tests, counted when key.count_samples
   // (occlusion queries, GL 2.1 §4.1.7); draw_primitives hands the sum to the query.
   mutable uint64_t samples_passed = 0;

@@ -2,6 +2,8 @@
 // §3.4.1 eq 3.7 for lines: every attribute perspective-correct, as value/w and 1/w planes).
 #include "raster/setup_shade.h"
 
+#include "shader/io.h"
+
 namespace pineda {
 
 namespace {
@@ -41,6 +43,8 @@ bool same_colors(const ShadeSetup& ss, const PVertex* const* v, int n, int slot)
 template <typename F>
 void program_planes(const FragmentProgram& fp, const PVertex& provoking, bool flat, int color_slot,
                     ShadeInputs& out, F plane) {
+  // gl_PointCoord is zero but for point sprites (setup_shade_sprite).
+  if (fp.point_coord) out.point_coord[0] = out.point_coord[1] = PlaneF{};
   for (int i = 0; i < fp.input_count; ++i) {
     const int at = fp.input_attr[i];
     PlaneF p;
@@ -141,6 +145,25 @@ void setup_shade_sprite(const ShadeSetup& ss, const RasterModes& modes, const PV
   const double t_up = (oy + 0.5 - static_cast<double>(p.win[1])) * inv;
   const double t0 = modes.sprite_lower_left ? 0.5 + t_up : 0.5 - t_up;
   const double dt = modes.sprite_lower_left ? inv : -inv;
+  const PlaneF s_plane{static_cast<float>(s0), static_cast<float>(inv), 0.0f};
+  const PlaneF t_plane{static_cast<float>(t0), 0.0f, static_cast<float>(dt)};
+  if (ss.program != nullptr) {
+    // A fragment shader: gl_PointCoord is (s, t), and gl_TexCoord[u] of the units with
+    // COORD_REPLACE is (s, t, 0, 1) (every plane is a value plane: 1/w is 1 for points).
+    const FragmentProgram& fp = *ss.program;
+    if (fp.point_coord) {
+      out.point_coord[0] = s_plane;
+      out.point_coord[1] = t_plane;
+    }
+    for (int i = 0; i < fp.input_count; ++i) {
+      const int slot = fp.input_comp[i] / 4 - shader::kFragTexCoord0, c = fp.input_comp[i] % 4;
+      if (slot < 0 || slot >= kMaxTexUnits || !((modes.sprite_coord_replace >> slot) & 1u))
+        continue;
+      const PlaneF pl = c == 0 ? s_plane : c == 1 ? t_plane : PlaneF{c == 3 ? 1.0f : 0.0f, 0, 0};
+      out.prog_w[i] = {pl.v0, pl.dx, pl.dy};
+    }
+    return;
+  }
   for (int k = 0; k < ss.unit_count; ++k) {
     const int u = ss.unit[k].index;
     if (!((modes.sprite_coord_replace >> u) & 1u)) continue;
