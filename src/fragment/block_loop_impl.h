@@ -891,6 +891,43 @@ void write_row3(const FragCtx& ctx, uint8_t* row, unsigned m, const Row& s) {
   }
 }
 
+// The further draw buffers of a fragment shader's draw (FragCtx::more, §4.2.1): the fragments
+// of `passed` (those that passed every test in the primary buffer's block loop), each buffer
+// with the colour of its output, from the shader run the block loop just made.
+[[gnu::noinline]] inline void write_more_buffers(const FragCtx& ctx, int bx, int by,
+                                                 uint64_t passed, const float (*shaded)[64]) {
+  if (passed == 0) return;
+  const bool per_output = ctx.shade->program->frag_data;
+  alignas(32) float colors[4][64];
+  for (int i = 0; i < ctx.more_count; ++i) {
+    const FragCtx& o = *ctx.more[i];
+    if (per_output) shade_program_colors(ctx, o.color_output, colors);
+    o.write_color(o, bx, by, passed, per_output ? colors : shaded);
+  }
+}
+
+// A further draw buffer's writer (ColorWriteFn): blending or logical operation (X), colour
+// mask and store of the given colours, row by row.
+template <ColorFormat F, ColorPath C, BlendPath B, bool X>
+void write_colors(const FragCtx& ctx, int bx, int by, uint64_t mask, const float (*colors)[64]) {
+  using L = Layout<F>;
+  constexpr ColorFormat P = L::bpp == 4 ? F : ColorFormat::RGBA8;
+  const bool in_buffer = bx + N <= ctx.fb_width;
+  while (mask != 0) {
+    const int j = std::countr_zero(mask) >> 3;
+    const unsigned m = static_cast<unsigned>(mask >> (8 * j)) & 0xffu;
+    mask &= ~(0xffull << (8 * j));
+    uint8_t* const row = ctx.color + static_cast<ptrdiff_t>(by + j) * ctx.color_stride +
+                         static_cast<ptrdiff_t>(bx) * L::bpp;
+    Row s;
+    per_fragment_row<P>(colors, j, s);
+    if constexpr (L::bpp == 4)
+      write_row4<F, C, B, X>(ctx, row, m, in_buffer, s);
+    else
+      write_row3<C, B, X>(ctx, row, m, s);
+  }
+}
+
 // X selects the extended instances: alpha test (§4.1.4) before the stencil and depth tests
 // (§4.1.5, §4.1.6), and the logical operation (§4.1.10) in place of blending, each behind a
 // per-row branch on the key. Without X none of that code exists in the instance.
@@ -937,6 +974,7 @@ void block_loop(const FragCtx& ctx, const FragInputs& in, int bx, int by, uint64
       }
       if (live == 0) return;
       live = shade_block(ctx, in, bx, by, live, shaded_block);
+      const uint64_t written = live;
       const bool in_buffer = bx + N <= ctx.fb_width;
       while (live != 0) {
         const int j = std::countr_zero(live) >> 3;
@@ -951,6 +989,7 @@ void block_loop(const FragCtx& ctx, const FragInputs& in, int bx, int by, uint64
         else
           write_row3<C, B, X>(ctx, row, m, s);
       }
+      if (ctx.more_count > 0) write_more_buffers(ctx, bx, by, written, shaded_block);
       return;
     }
   }
@@ -959,6 +998,8 @@ void block_loop(const FragCtx& ctx, const FragInputs& in, int bx, int by, uint64
                        D != DepthPath::Off && ctx.shader_depth ? shaded_z : nullptr);
     if (mask == 0) return;
   }
+  // The fragments stored, for the further draw buffers (FragCtx::more).
+  [[maybe_unused]] uint64_t passed = 0;
   // One row: the tests, then colour and store for the survivors of `m`. `in_buffer`: the whole
   // row lies inside the buffer (bx + 8 <= width).
   const auto run_row = [&](int j, unsigned m, bool in_buffer) __attribute__((always_inline)) {
@@ -1011,6 +1052,7 @@ void block_loop(const FragCtx& ctx, const FragInputs& in, int bx, int by, uint64
         write_row4<F, C, B, X>(ctx, row, m, in_buffer, s);
       else
         write_row3<C, B, X>(ctx, row, m, s);
+      if constexpr (S == ShadePath::PerFragment) passed |= static_cast<uint64_t>(m) << (8 * j);
     }
   };
   // A fully covered block (inside the buffer by construction): its rows in order, each with
@@ -1020,7 +1062,7 @@ void block_loop(const FragCtx& ctx, const FragInputs& in, int bx, int by, uint64
     if (mask == ~uint64_t{0}) {
       for (int j = 0; j < N; ++j)
         run_row(j, 0xffu, true);
-      return;
+      mask = 0;
     }
   }
   while (mask != 0) {
@@ -1029,6 +1071,8 @@ void block_loop(const FragCtx& ctx, const FragInputs& in, int bx, int by, uint64
     mask &= ~(0xffull << (8 * j));
     run_row(j, m, bx + N <= ctx.fb_width);
   }
+  if constexpr (S == ShadePath::PerFragment && C != ColorPath::None)
+    if (ctx.more_count > 0) write_more_buffers(ctx, bx, by, passed, shaded_block);
 }
 
 void noop_block(const FragCtx&, const FragInputs&, int, int, uint64_t) {}

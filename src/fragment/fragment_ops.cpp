@@ -63,6 +63,42 @@ void prepare_ext(const RasterState& rs, const Framebuffer& fb, FragCtx& ctx) {
 
 } // namespace
 
+namespace {
+
+// Colour writers of the further draw buffers (FragCtx::more), index
+//   ((format * 2 + (partial ? 1 : 0)) * blends + blend) * 2 + (logic op ? 1 : 0).
+// Baseline instances only: every instruction set writes the same bytes.
+constexpr int kWriterCount = kColorFormatCount * 2 * kBlendPathCount * 2;
+
+template <int I> constexpr ColorWriteFn writer_entry() {
+  constexpr bool x = (I % 2) != 0;
+  constexpr auto b = static_cast<BlendPath>((I / 2) % kBlendPathCount);
+  constexpr auto c = ((I / (2 * kBlendPathCount)) % 2) ? ColorPath::Partial : ColorPath::All;
+  constexpr auto f = static_cast<ColorFormat>(I / (4 * kBlendPathCount));
+  return &write_colors<f, c, b, x>;
+}
+
+template <size_t... I>
+constexpr std::array<ColorWriteFn, sizeof...(I)> make_writer_table(std::index_sequence<I...>) {
+  return {writer_entry<static_cast<int>(I)>()...};
+}
+
+constexpr std::array<ColorWriteFn, kWriterCount> kWriterTable =
+    make_writer_table(std::make_index_sequence<kWriterCount>{});
+
+} // namespace
+
+ColorWriteFn select_color_writer(const StateKey& key) {
+  const ColorPath c = key.color_path();
+  if (c == ColorPath::None) return nullptr;
+  const int i =
+      ((static_cast<int>(key.format) * 2 + (c == ColorPath::Partial ? 1 : 0)) * kBlendPathCount +
+       static_cast<int>(key.blend_path())) *
+          2 +
+      (key.logic_op ? 1 : 0);
+  return kWriterTable[static_cast<size_t>(i)];
+}
+
 BlockFn select_block_fn_baseline(const StateKey& key, ShadePath shade) {
   return select_from_tables(key, shade);
 }
@@ -85,6 +121,8 @@ void prepare_fragments(const RasterState& rs, const Framebuffer& fb, FragCtx& ct
   const FragmentProgram* prog = rs.shade != nullptr ? rs.shade->program : nullptr;
   ctx.color_output = fb.color_output;
   ctx.alpha_test_color0 = false;
+  ctx.more_count = 0;
+  ctx.write_color = nullptr;
   // §4.1.4: with several fragment colours the alpha test takes colour zero's alpha; a pass of
   // another colour has the fragment stage test it (shade_program.cpp).
   if (k.alpha_test && prog != nullptr && prog->frag_data && fb.color_output != 0) {

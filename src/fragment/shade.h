@@ -124,6 +124,11 @@ uint64_t shade_block(const FragCtx& ctx, const FragInputs& in, int bx, int by, u
 uint64_t shade_program_block(const FragCtx& ctx, const FragInputs& in, int bx, int by,
                              uint64_t mask, float (*out)[64], uint32_t* depth);
 
+// After shade_program_block on this thread: the colours the shader gave draw buffer `output`
+// (gl_FragData[output], or gl_FragColor), in the layout shade_block writes (every entry of the
+// rows it wrote defined).
+void shade_program_colors(const FragCtx& ctx, int output, float (*out)[64]);
+
 // Texture environment of one fragment (exposed for tests): previous colour `cp`, primary colour
 // `cf`, every unit's texture colour `tex` (indexed by position in ShadeSetup::unit), the result
 // in `cv`. All values in [0,1].

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cstring>
 #include <memory>
+#include <iterator>
 
 #include "fragment/shade.h"
 #include "shader/engine.h"
@@ -22,6 +23,11 @@ struct FragmentBuffers {
   void* scratch = nullptr;
   alignas(64) float in[kNumFragmentInputs * 4][kBlockLanes];
   alignas(64) float out[kNumFragmentOutputs * 4][kBlockLanes];
+  // The last run's quads (block position of each) and the outputs it wrote, for
+  // shade_program_colors.
+  int nq = 0;
+  int qpix[16] = {};
+  bool written[kNumFragmentOutputs * 4] = {};
 
   void* scratch_for(size_t bytes) {
     if (bytes > scratch_size) {
@@ -78,7 +84,11 @@ uint64_t shade_program_block(const FragCtx& ctx, const FragInputs& in, int bx, i
   if (fp.point_coord)
     for (int c = 0; c < 2; ++c)
       in_ptr[kFragPointCoord * 4 + c] = fb.in[kFragPointCoord * 4 + c];
+  std::fill(std::begin(fb.written), std::end(fb.written), false);
+  fb.nq = nq;
+  std::copy_n(qpix, nq, fb.qpix);
   for (int c : fp.exe->outputs_written()) {
+    fb.written[c] = true;
     out_ptr[c] = fb.out[c];
     std::fill(fb.out[c], fb.out[c] + 4 * nq, 0.0f);
   }
@@ -153,6 +163,21 @@ uint64_t shade_program_block(const FragCtx& ctx, const FragInputs& in, int bx, i
     }
   }
   return mask;
+}
+
+void shade_program_colors(const FragCtx& ctx, int output, float (*out)[64]) {
+  const FragmentProgram& fp = *ctx.shade->program;
+  const FragmentBuffers& fb = fragment_buffers();
+  const int slot = kOutFragData0 + (fp.frag_data ? output : 0);
+  std::memset(out, 0, sizeof(float) * 4 * 64);
+  for (int q = 0; q < fb.nq; ++q) {
+    const int p = fb.qpix[q];
+    for (int l = 0; l < 4; ++l) {
+      const int e = p + (l & 1) + 8 * (l >> 1);
+      for (int c = 0; c < 4; ++c)
+        out[c][e] = fb.written[slot * 4 + c] ? fb.out[slot * 4 + c][4 * q + l] : 0.0f;
+    }
+  }
 }
 
 } // namespace pineda
