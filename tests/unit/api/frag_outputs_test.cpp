@@ -241,6 +241,66 @@ TEST_F(FragOutputsTest, FragDataIntoDrawBuffers) {
   EXPECT_EQ(glGetError(), static_cast<GLenum>(GL_NO_ERROR));
 }
 
+// One shader run stores into every draw buffer with the buffer's own format (RGB8: no alpha,
+// destination alpha 1 in blending), after the depth test, under the shared blend and mask.
+TEST_F(FragOutputsTest, FragDataWithDepthBlendAndMask) {
+  GLuint rb[3];
+  glGenRenderbuffers(3, rb);
+  GLuint f = 0;
+  glGenFramebuffers(1, &f);
+  glBindFramebuffer(GL_FRAMEBUFFER, f);
+  const GLenum formats[3] = {GL_RGBA8, GL_RGB8, GL_DEPTH_COMPONENT24};
+  const GLenum points[3] = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1, GL_DEPTH_ATTACHMENT};
+  for (int i = 0; i < 3; ++i) {
+    glBindRenderbuffer(GL_RENDERBUFFER, rb[i]);
+    glRenderbufferStorage(GL_RENDERBUFFER, formats[i], 8, 8);
+    glFramebufferRenderbuffer(GL_FRAMEBUFFER, points[i], GL_RENDERBUFFER, rb[i]);
+  }
+  const GLenum bufs[2] = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1};
+  glDrawBuffers(2, bufs);
+  ASSERT_EQ(glCheckFramebufferStatus(GL_FRAMEBUFFER), static_cast<GLenum>(GL_FRAMEBUFFER_COMPLETE));
+  glViewport(0, 0, 8, 8);
+  glClearColor(0.0f, 0.0f, 0.0f, 0.0f);
+  glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+  glEnable(GL_DEPTH_TEST);
+  const GLuint p = use(kVs, "uniform vec4 c0, c1;\n"
+                            "void main() { gl_FragData[0] = c0; gl_FragData[1] = c1; }\n");
+  const GLint c0 = glGetUniformLocation(p, "c0"), c1 = glGetUniformLocation(p, "c1");
+  glUniform4f(c0, 0.2f, 0.2f, 0.2f, 0.5f);
+  glUniform4f(c1, 0.4f, 0.4f, 0.4f, 0.5f);
+  quad(0.0f);
+  // Behind: fails the depth test in both buffers.
+  glUniform4f(c0, 1.0f, 1.0f, 1.0f, 1.0f);
+  glUniform4f(c1, 1.0f, 1.0f, 1.0f, 1.0f);
+  quad(0.5f);
+  // In front, blended (SRC_ALPHA, ONE) with green masked off.
+  glEnable(GL_BLEND);
+  glBlendFunc(GL_SRC_ALPHA, GL_ONE);
+  glColorMask(GL_TRUE, GL_FALSE, GL_TRUE, GL_TRUE);
+  glUniform4f(c0, 0.4f, 0.4f, 0.0f, 0.5f);
+  glUniform4f(c1, 0.0f, 0.4f, 0.4f, 0.5f);
+  quad(-0.5f);
+  glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+  glDisable(GL_BLEND);
+  glDisable(GL_DEPTH_TEST);
+  glUseProgram(0);
+  const auto read = [](GLenum buffer) {
+    glReadBuffer(buffer);
+    uint8_t v[4] = {};
+    glReadPixels(3, 3, 1, 1, GL_RGBA, GL_UNSIGNED_BYTE, v);
+    return std::vector<int>{v[0], v[1], v[2], v[3]};
+  };
+  // Buffer 0: (0.2 + 0.2, 0.2, 0.2, 0.5 + 0.25) in 8-bit steps = (102, 51, 51, 192).
+  EXPECT_EQ(read(GL_COLOR_ATTACHMENT0), (std::vector<int>{102, 51, 51, 192}));
+  // Buffer 1 (RGB8): (0.4, 0.4, 0.4 + 0.2) with alpha read as 1.
+  EXPECT_EQ(read(GL_COLOR_ATTACHMENT1), (std::vector<int>{102, 102, 153, 255}));
+  glBindFramebuffer(GL_FRAMEBUFFER, 0);
+  glDeleteFramebuffers(1, &f);
+  glDeleteRenderbuffers(3, rb);
+  glDeleteProgram(p);
+  EXPECT_EQ(glGetError(), static_cast<GLenum>(GL_NO_ERROR));
+}
+
 // §4.1.4: with several fragment colours the alpha test takes colour zero's alpha for every
 // draw buffer.
 TEST_F(FragOutputsTest, AlphaTestUsesColorZero) {
