@@ -176,8 +176,21 @@ void point_coord_scene(GLenum origin) {
   }
   gl.done(q);
   glTexEnvi(GL_POINT_SPRITE, GL_COORD_REPLACE, GL_FALSE);
-  point_parameteri(GL_POINT_SPRITE_COORD_ORIGIN, GL_UPPER_LEFT);
+  // Aliased points that are not sprites: llvmpipe gives gl_PointCoord across their square too
+  // (GL 2.1 leaves it undefined).
   glDisable(GL_POINT_SPRITE);
+  const GLuint r = gl.program(kPassVs, "#version 120\nvoid main() {\n"
+                                       "  gl_FragColor = vec4(gl_PointCoord, 0.5, 1.0);\n"
+                                       "}\n");
+  const float aliased[5] = {2.0f, 3.0f, 5.0f, 8.0f, 13.0f};
+  for (int i = 0; i < 5; ++i) {
+    glPointSize(aliased[i]);
+    glBegin(GL_POINTS);
+    glVertex2f(30.0f + 45.0f * static_cast<float>(i) + 0.25f, 220.0f + 0.5f);
+    glEnd();
+  }
+  gl.done(r);
+  point_parameteri(GL_POINT_SPRITE_COORD_ORIGIN, GL_UPPER_LEFT);
   glPointSize(1.0f);
   glColor3f(1, 1, 1);
 }
@@ -186,7 +199,8 @@ void point_coord_scene(GLenum origin) {
 
 PINEDA_SCENE(glsl_point_coord_upper_left,
              "gl_PointCoord and COORD_REPLACE gl_TexCoord[0] on point sprites of whole and "
-             "fractional sizes, POINT_SPRITE_COORD_ORIGIN UPPER_LEFT",
+             "fractional sizes, POINT_SPRITE_COORD_ORIGIN UPPER_LEFT; gl_PointCoord on aliased "
+             "points that are not sprites",
              .gl_version = "2.1") {
   point_coord_scene(GL_UPPER_LEFT);
 }

@@ -189,6 +189,22 @@ TEST_F(FragOutputsTest, PointCoordOnSprites) {
   EXPECT_EQ(glGetError(), static_cast<GLenum>(GL_NO_ERROR));
 }
 
+// Aliased points that are not sprites get the sprite coordinates over their square too, with t
+// downwards whatever POINT_SPRITE_COORD_ORIGIN says (undefined in GL 2.1; llvmpipe's values).
+TEST_F(FragOutputsTest, PointCoordOnAliasedPoints) {
+  const GLuint p = use(kVs, "#version 120\nvoid main() {\n"
+                            "  gl_FragColor = vec4(gl_PointCoord, 0.0, 1.0); }\n");
+  glPointParameteri(GL_POINT_SPRITE_COORD_ORIGIN, GL_LOWER_LEFT);
+  glPointSize(8.0f);
+  glBegin(GL_POINTS);
+  glVertex2f(0.0f, 0.0f); // window (16, 16): pixels 12..19
+  glEnd();
+  EXPECT_EQ(pixel(12, 19), 0xff001010u); // s = t = 1/16 at the top left
+  EXPECT_EQ(pixel(19, 12), 0xff00efefu); // s = t = 15/16 at the bottom right
+  glUseProgram(0);
+  glDeleteProgram(p);
+}
+
 // §4.2.1: gl_FragData[n] goes to draw buffer n (a NONE entry takes its output nowhere);
 // gl_FragColor to every draw buffer.
 TEST_F(FragOutputsTest, FragDataIntoDrawBuffers) {
