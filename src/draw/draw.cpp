@@ -8,6 +8,7 @@
 #include "draw/draw_cache.h"
 #include "draw/feedback.h"
 #include "fragment/fragment_ops.h"
+#include "fragment/shade.h"
 #include "geometry/assemble.h"
 #include "geometry/clip.h"
 #include "geometry/transform.h"
@@ -171,12 +172,28 @@ DrawRegion draw_region(const RasterState& rs, const FragCtx& frag, GLenum mode,
 }
 
 // With FRONT_AND_BACK (GL 2.1 §4.2.1) or several draw buffers, the further buffers first, from the
-// same depth and stencil values (draw_buffers.h), then the primary one.
+// same depth and stencil values (draw_buffers.h), then the primary one. A fragment shader's draw
+// instead shades each fragment once and stores it into every buffer (FragCtx::more), unless
+// smooth points or lines are on (their fragments take the constant-colour path).
 [[gnu::noinline]] void rasterize_both_buffers(const DrawCall& dc, RasterWorkers* workers,
                                               GLenum mode, const PVertex* verts,
                                               const uint32_t* indices, size_t count) {
   Framebuffer& fb = *dc.fb;
   const RasterState& rs = *dc.state;
+  const FragCtx& frag = *dc.frag;
+  if (frag.shade != nullptr && frag.shade->program != nullptr &&
+      frag.key.color_path() != ColorPath::None && !rs.modes.line_smooth && !rs.modes.point_smooth) {
+    FragCtx more[kMaxDrawBuffers - 1];
+    FragCtx first = frag;
+    for (int i = 0; i < fb.more_count; ++i) {
+      prepare_fragments(rs, fb.with_color(fb.more[i]), more[i]);
+      more[i].write_color = select_color_writer(more[i].key);
+      if (more[i].write_color != nullptr) first.more[first.more_count++] = &more[i];
+    }
+    DrawCall one = dc;
+    one.frag = &first;
+    return rasterize(one, workers, mode, verts, indices, count);
+  }
   const DrawRegion region = draw_region(rs, *dc.frag, mode, verts, indices, count);
   for_each_draw_buffer(fb, rs, region, [&](bool primary) {
     if (primary) return rasterize(dc, workers, mode, verts, indices, count);

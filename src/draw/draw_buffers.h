@@ -3,7 +3,8 @@
 // first into the further colour buffers and then into the primary one; all passes must meet every
 // fragment with the same depth and stencil values and so make the same decisions, so the depth and
 // stencil values the first pass may change are kept and put back. Only the draw's region is kept:
-// the window rectangle its primitives or pixels can reach.
+// the window rectangle its primitives or pixels can reach. A fragment shader's draw of primitives
+// takes one pass instead (draw.cpp rasterize_both_buffers, FragCtx::more).
 #pragma once
 
 #include <cstdint>

@@ -24,9 +24,9 @@ struct DrawCache {
 inline bool same_surfaces(const Framebuffer& a, const Framebuffer& b) {
   return a.width == b.width && a.height == b.height && a.color_format == b.color_format &&
          a.color == b.color && a.color_stride == b.color_stride && a.alpha_bits == b.alpha_bits &&
-         a.depth == b.depth && a.depth_bits == b.depth_bits && a.depth_stride == b.depth_stride &&
-         a.stencil == b.stencil && a.stencil_bits == b.stencil_bits &&
-         a.stencil_stride == b.stencil_stride;
+         a.color_output == b.color_output && a.depth == b.depth && a.depth_bits == b.depth_bits &&
+         a.depth_stride == b.depth_stride && a.stencil == b.stencil &&
+         a.stencil_bits == b.stencil_bits && a.stencil_stride == b.stencil_stride;
 }
 
 } // namespace pineda

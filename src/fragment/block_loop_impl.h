@@ -542,12 +542,14 @@ void blend_generic_row(const FragCtx& ctx, unsigned m, Row& s, const Row& d) {
 }
 
 // Depth test and write of one row of a block (GL 2.1 §4.1.6). Returns the fragments of `m`
-// that passed.
+// that passed. `zrow`, when set, holds the row's depth values as the fragment shader wrote them
+// (gl_FragDepth, §3.11.2) in place of the primitive's.
 template <DepthPath D>
 [[gnu::always_inline]] inline unsigned depth_row(const FragCtx& ctx, const FragInputs& in, int bx,
-                                                 int y, int di, int dj, unsigned m) {
+                                                 int y, int di, int dj, unsigned m,
+                                                 const uint32_t* zrow = nullptr) {
   uint32_t* const d = ctx.depth + static_cast<ptrdiff_t>(y) * ctx.depth_stride + bx;
-  const Row zv = depth_values(ctx, in.z, di, dj);
+  const Row zv = zrow != nullptr ? row_load(zrow) : depth_values(ctx, in.z, di, dj);
   const bool write = D != DepthPath::Generic || ctx.depth_write;
 #if PINEDA_BLOCK_AVX512
   // Coverage and result as opmasks, the stored values kept by a masked move. Rows inside the
@@ -715,7 +717,7 @@ template <ColorFormat P> unsigned alpha_row(const FragCtx& ctx, const Row& s, un
 // counts as passing). Returns the fragments that passed both tests.
 template <DepthPath D>
 unsigned stencil_depth_row(const FragCtx& ctx, const FragInputs& in, int bx, int y, int di, int dj,
-                           unsigned m) {
+                           unsigned m, const uint32_t* zrow) {
   uint8_t* const st = ctx.stencil + static_cast<ptrdiff_t>(y) * ctx.stencil_stride + bx;
   // Whole rows inside the buffer are loaded and stored as eight bytes; the last block of a
   // row whose width is not a multiple of 8 touches only its fragments.
@@ -742,7 +744,7 @@ unsigned stencil_depth_row(const FragCtx& ctx, const FragInputs& in, int bx, int
   const unsigned spass = m & lane_bits(pass[0], pass[1]);
   unsigned zpass = spass;
   if constexpr (D != DepthPath::Off)
-    zpass = spass != 0 ? depth_row<D>(ctx, in, bx, y, di, dj, spass) : 0;
+    zpass = spass != 0 ? depth_row<D>(ctx, in, bx, y, di, dj, spass, zrow) : 0;
   if (side.write_mask == 0) return zpass;
   const i32x4 wm = zero + side.write_mask;
   i32x4 sfail[2], dpfail[2], dppass[2];
@@ -889,6 +891,43 @@ void write_row3(const FragCtx& ctx, uint8_t* row, unsigned m, const Row& s) {
   }
 }
 
+// The further draw buffers of a fragment shader's draw (FragCtx::more, §4.2.1): the fragments
+// of `passed` (those that passed every test in the primary buffer's block loop), each buffer
+// with the colour of its output, from the shader run the block loop just made.
+[[gnu::noinline]] inline void write_more_buffers(const FragCtx& ctx, int bx, int by,
+                                                 uint64_t passed, const float (*shaded)[64]) {
+  if (passed == 0) return;
+  const bool per_output = ctx.shade->program->frag_data;
+  alignas(32) float colors[4][64];
+  for (int i = 0; i < ctx.more_count; ++i) {
+    const FragCtx& o = *ctx.more[i];
+    if (per_output) shade_program_colors(ctx, o.color_output, colors);
+    o.write_color(o, bx, by, passed, per_output ? colors : shaded);
+  }
+}
+
+// A further draw buffer's writer (ColorWriteFn): blending or logical operation (X), colour
+// mask and store of the given colours, row by row.
+template <ColorFormat F, ColorPath C, BlendPath B, bool X>
+void write_colors(const FragCtx& ctx, int bx, int by, uint64_t mask, const float (*colors)[64]) {
+  using L = Layout<F>;
+  constexpr ColorFormat P = L::bpp == 4 ? F : ColorFormat::RGBA8;
+  const bool in_buffer = bx + N <= ctx.fb_width;
+  while (mask != 0) {
+    const int j = std::countr_zero(mask) >> 3;
+    const unsigned m = static_cast<unsigned>(mask >> (8 * j)) & 0xffu;
+    mask &= ~(0xffull << (8 * j));
+    uint8_t* const row = ctx.color + static_cast<ptrdiff_t>(by + j) * ctx.color_stride +
+                         static_cast<ptrdiff_t>(bx) * L::bpp;
+    Row s;
+    per_fragment_row<P>(colors, j, s);
+    if constexpr (L::bpp == 4)
+      write_row4<F, C, B, X>(ctx, row, m, in_buffer, s);
+    else
+      write_row3<C, B, X>(ctx, row, m, s);
+  }
+}
+
 // X selects the extended instances: alpha test (§4.1.4) before the stencil and depth tests
 // (§4.1.5, §4.1.6), and the logical operation (§4.1.10) in place of blending, each behind a
 // per-row branch on the key. Without X none of that code exists in the instance.
@@ -900,9 +939,10 @@ void block_loop(const FragCtx& ctx, const FragInputs& in, int bx, int by, uint64
   // A fully covered block that the depth test rejects whole (hidden surfaces drawn after what
   // hides them) costs one pass over its stored depths. The stencil test must still see its
   // fragments (depth-fail updates); the alpha test and sample counting need not.
+  // A shader that writes gl_FragDepth decides the depth itself: no rejection before it ran.
   if constexpr (D != DepthPath::Off) {
     if (mask == ~uint64_t{0} && (!X || !ctx.key.stencil_test) &&
-        block_fails_depth<D>(ctx, in, bx, by))
+        (S != ShadePath::PerFragment || !ctx.shader_depth) && block_fails_depth<D>(ctx, in, bx, by))
       return;
   }
   [[maybe_unused]] Row const_row{};
@@ -914,6 +954,8 @@ void block_loop(const FragCtx& ctx, const FragInputs& in, int bx, int by, uint64
   // Texturing and fog: the whole block's colours first (fragment/shade.cpp), which writes every
   // row that holds a fragment of `mask`, the only rows read below.
   [[maybe_unused]] alignas(32) float shaded_block[4][64];
+  // gl_FragDepth of the block's fragments in depth-buffer units (ctx.shader_depth).
+  [[maybe_unused]] alignas(32) uint32_t shaded_z[64];
   if constexpr (S == ShadePath::PerFragment && !X && D != DepthPath::Off && C != ColorPath::None) {
     // Early depth test: without the alpha test (only in the X instances) nothing the depth
     // test decides depends on texturing or fog (§4.1.6 needs the window z alone), so every row
@@ -932,6 +974,7 @@ void block_loop(const FragCtx& ctx, const FragInputs& in, int bx, int by, uint64
       }
       if (live == 0) return;
       live = shade_block(ctx, in, bx, by, live, shaded_block);
+      const uint64_t written = live;
       const bool in_buffer = bx + N <= ctx.fb_width;
       while (live != 0) {
         const int j = std::countr_zero(live) >> 3;
@@ -946,13 +989,17 @@ void block_loop(const FragCtx& ctx, const FragInputs& in, int bx, int by, uint64
         else
           write_row3<C, B, X>(ctx, row, m, s);
       }
+      if (ctx.more_count > 0) write_more_buffers(ctx, bx, by, written, shaded_block);
       return;
     }
   }
   if constexpr (S == ShadePath::PerFragment) {
-    mask = shade_block(ctx, in, bx, by, mask, shaded_block);
+    mask = shade_block(ctx, in, bx, by, mask, shaded_block,
+                       D != DepthPath::Off && ctx.shader_depth ? shaded_z : nullptr);
     if (mask == 0) return;
   }
+  // The fragments stored, for the further draw buffers (FragCtx::more).
+  [[maybe_unused]] uint64_t passed = 0;
   // One row: the tests, then colour and store for the survivors of `m`. `in_buffer`: the whole
   // row lies inside the buffer (bx + 8 <= width).
   const auto run_row = [&](int j, unsigned m, bool in_buffer) __attribute__((always_inline)) {
@@ -960,6 +1007,10 @@ void block_loop(const FragCtx& ctx, const FragInputs& in, int bx, int by, uint64
     const int di = bx - in.ox, dj = y - in.oy;
     Row s;
     bool shaded = false;
+    // Only the PerFragment instances can meet a shader's depth; the others pass a constant null.
+    const uint32_t* zrow = nullptr;
+    if constexpr (S == ShadePath::PerFragment && D != DepthPath::Off)
+      if (ctx.shader_depth) zrow = shaded_z + 8 * j;
     if constexpr (X) {
       if (ctx.key.alpha_test) {
         if constexpr (S == ShadePath::Const)
@@ -973,14 +1024,14 @@ void block_loop(const FragCtx& ctx, const FragInputs& in, int bx, int by, uint64
         if (m == 0) return;
       }
       if (ctx.key.stencil_test) {
-        m = stencil_depth_row<D>(ctx, in, bx, y, di, dj, m);
+        m = stencil_depth_row<D>(ctx, in, bx, y, di, dj, m, zrow);
         if (m == 0) return;
       } else if constexpr (D != DepthPath::Off) {
-        m = depth_row<D>(ctx, in, bx, y, di, dj, m);
+        m = depth_row<D>(ctx, in, bx, y, di, dj, m, zrow);
         if (m == 0) return;
       }
     } else if constexpr (D != DepthPath::Off) {
-      m = depth_row<D>(ctx, in, bx, y, di, dj, m);
+      m = depth_row<D>(ctx, in, bx, y, di, dj, m, zrow);
       if (m == 0) return;
     }
     // §4.1.7: SAMPLES_PASSED counts what survived the stencil and depth tests.
@@ -1001,6 +1052,7 @@ void block_loop(const FragCtx& ctx, const FragInputs& in, int bx, int by, uint64
         write_row4<F, C, B, X>(ctx, row, m, in_buffer, s);
       else
         write_row3<C, B, X>(ctx, row, m, s);
+      if constexpr (S == ShadePath::PerFragment) passed |= static_cast<uint64_t>(m) << (8 * j);
     }
   };
   // A fully covered block (inside the buffer by construction): its rows in order, each with
@@ -1010,7 +1062,7 @@ void block_loop(const FragCtx& ctx, const FragInputs& in, int bx, int by, uint64
     if (mask == ~uint64_t{0}) {
       for (int j = 0; j < N; ++j)
         run_row(j, 0xffu, true);
-      return;
+      mask = 0;
     }
   }
   while (mask != 0) {
@@ -1019,6 +1071,8 @@ void block_loop(const FragCtx& ctx, const FragInputs& in, int bx, int by, uint64
     mask &= ~(0xffull << (8 * j));
     run_row(j, m, bx + N <= ctx.fb_width);
   }
+  if constexpr (S == ShadePath::PerFragment && C != ColorPath::None)
+    if (ctx.more_count > 0) write_more_buffers(ctx, bx, by, passed, shaded_block);
 }
 
 void noop_block(const FragCtx&, const FragInputs&, int, int, uint64_t) {}
@@ -1090,6 +1144,19 @@ constexpr std::array<BlockFn, kDepthPathCount> kDepthOnlyTable = {
                 ShadePath::Const, false>,
 };
 
+// Depth-only instances that run the fragment shader first: one that discards or writes
+// gl_FragDepth decides what the depth test sees (§3.11.2). Without a depth test nothing is
+// written.
+constexpr std::array<BlockFn, kDepthPathCount> kDepthOnlyShadeTable = {
+    &noop_block,
+    &block_loop<DepthPath::LessWrite, ColorFormat::RGBA8, ColorPath::None, BlendPath::Off,
+                ShadePath::PerFragment, false>,
+    &block_loop<DepthPath::LequalWrite, ColorFormat::RGBA8, ColorPath::None, BlendPath::Off,
+                ShadePath::PerFragment, false>,
+    &block_loop<DepthPath::Generic, ColorFormat::RGBA8, ColorPath::None, BlendPath::Off,
+                ShadePath::PerFragment, false>,
+};
+
 // The instance for a key and shade path from this translation unit's tables.
 BlockFn select_from_tables(const StateKey& key, ShadePath shade) {
   const ColorPath c = key.color_path();
@@ -1100,7 +1167,9 @@ BlockFn select_from_tables(const StateKey& key, ShadePath shade) {
                                 static_cast<int>(shade)];
     return kExtColorTable[color_index(d, key.format, c, key.blend_path(), shade)];
   }
-  if (c == ColorPath::None) return kDepthOnlyTable[static_cast<int>(key.depth_path())];
+  if (c == ColorPath::None)
+    return (shade == ShadePath::PerFragment ? kDepthOnlyShadeTable
+                                            : kDepthOnlyTable)[static_cast<int>(key.depth_path())];
   return kColorTable[color_index(key.depth_path(), key.format, c, key.blend_path(), shade)];
 }
 

@@ -63,6 +63,42 @@ void prepare_ext(const RasterState& rs, const Framebuffer& fb, FragCtx& ctx) {
 
 } // namespace
 
+namespace {
+
+// Colour writers of the further draw buffers (FragCtx::more), index
+//   ((format * 2 + (partial ? 1 : 0)) * blends + blend) * 2 + (logic op ? 1 : 0).
+// Baseline instances only: every instruction set writes the same bytes.
+constexpr int kWriterCount = kColorFormatCount * 2 * kBlendPathCount * 2;
+
+template <int I> constexpr ColorWriteFn writer_entry() {
+  constexpr bool x = (I % 2) != 0;
+  constexpr auto b = static_cast<BlendPath>((I / 2) % kBlendPathCount);
+  constexpr auto c = ((I / (2 * kBlendPathCount)) % 2) ? ColorPath::Partial : ColorPath::All;
+  constexpr auto f = static_cast<ColorFormat>(I / (4 * kBlendPathCount));
+  return &write_colors<f, c, b, x>;
+}
+
+template <size_t... I>
+constexpr std::array<ColorWriteFn, sizeof...(I)> make_writer_table(std::index_sequence<I...>) {
+  return {writer_entry<static_cast<int>(I)>()...};
+}
+
+constexpr std::array<ColorWriteFn, kWriterCount> kWriterTable =
+    make_writer_table(std::make_index_sequence<kWriterCount>{});
+
+} // namespace
+
+ColorWriteFn select_color_writer(const StateKey& key) {
+  const ColorPath c = key.color_path();
+  if (c == ColorPath::None) return nullptr;
+  const int i =
+      ((static_cast<int>(key.format) * 2 + (c == ColorPath::Partial ? 1 : 0)) * kBlendPathCount +
+       static_cast<int>(key.blend_path())) *
+          2 +
+      (key.logic_op ? 1 : 0);
+  return kWriterTable[static_cast<size_t>(i)];
+}
+
 BlockFn select_block_fn_baseline(const StateKey& key, ShadePath shade) {
   return select_from_tables(key, shade);
 }
@@ -82,6 +118,19 @@ BlockFn select_block_fn(const StateKey& key, ShadePath shade) {
 void prepare_fragments(const RasterState& rs, const Framebuffer& fb, FragCtx& ctx) {
   ctx.key = make_state_key(rs, fb);
   const StateKey& k = ctx.key;
+  const FragmentProgram* prog = rs.shade != nullptr ? rs.shade->program : nullptr;
+  ctx.color_output = fb.color_output;
+  ctx.alpha_test_color0 = false;
+  ctx.more_count = 0;
+  ctx.write_color = nullptr;
+  // §4.1.4: with several fragment colours the alpha test takes colour zero's alpha; a pass of
+  // another colour has the fragment stage test it (shade_program.cpp).
+  if (k.alpha_test && prog != nullptr && prog->frag_data && fb.color_output != 0) {
+    ctx.alpha_test_color0 = true;
+    ctx.alpha_func = depth_func_bits(rs.alpha_func);
+    ctx.alpha_ref = color_to_unorm8(rs.alpha_ref);
+    ctx.key.alpha_test = false;
+  }
   ctx.color = fb.color;
   ctx.color_stride = fb.color_stride;
   ctx.depth = fb.depth;
@@ -127,10 +176,11 @@ void prepare_fragments(const RasterState& rs, const Framebuffer& fb, FragCtx& ct
   ctx.needs_color = k.color_path() != ColorPath::None || k.alpha_test;
   // A fragment shader that discards decides which fragments reach the depth and stencil
   // tests even when no colour is written (§3.11.2).
-  const bool kills =
-      rs.shade != nullptr && rs.shade->program != nullptr && rs.shade->program->discards;
-  ctx.shade = ctx.needs_color || kills ? rs.shade : nullptr;
-  ctx.late_depth = kills;
+  const bool kills = (prog != nullptr && prog->discards) || ctx.alpha_test_color0;
+  // §3.11.2: gl_FragDepth replaces the fragment's depth for the depth test and write.
+  ctx.shader_depth = prog != nullptr && prog->writes_depth && k.depth_test;
+  ctx.shade = ctx.needs_color || kills || ctx.shader_depth ? rs.shade : nullptr;
+  ctx.late_depth = kills || ctx.shader_depth;
   ctx.needs_depth = k.depth_test;
   ctx.noop = (!ctx.needs_color && !ctx.needs_depth && !k.stencil_test && !k.count_samples) ||
              ctx.clip_x0 > ctx.clip_x1 || ctx.clip_y0 > ctx.clip_y1;

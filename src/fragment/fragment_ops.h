@@ -62,6 +62,11 @@ struct FragInputs {
 
 struct FragCtx;
 using BlockFn = void (*)(const FragCtx& ctx, const FragInputs& in, int bx, int by, uint64_t mask);
+// Blends, masks and stores colours colors[c][8 * row + column] (c = R, G, B, A) of the fragments
+// of `mask` in the block at (bx, by) into ctx's colour buffer (GL 2.1 §4.1.8-§4.2.2): a further
+// draw buffer of a fragment shader's draw (FragCtx::more).
+using ColorWriteFn = void (*)(const FragCtx& ctx, int bx, int by, uint64_t mask,
+                              const float (*colors)[64]);
 
 // Everything the block loops read that is constant over a draw.
 struct FragCtx {
@@ -97,8 +102,24 @@ struct FragCtx {
   // Texturing, colour sum and fog per fragment (fragment/shade.h); set when the draw has
   // texturing or fog on and reads colour. Primitives then run ShadePath::PerFragment.
   const ShadeSetup* shade = nullptr;
-  // The fragment shader may discard fragments: the depth test waits for it (§3.11.2).
+  // The fragment shader may discard fragments or writes gl_FragDepth: the depth test waits
+  // for it (§3.11.2).
   bool late_depth = false;
+  // The fragment shader writes gl_FragDepth and the depth test is on: the PerFragment
+  // instances test and store the shader's depth, and no block is rejected before shading.
+  bool shader_depth = false;
+  // The draw buffer this pass writes (Framebuffer::color_output): a shader writing
+  // gl_FragData[n] gives buffer n its colour n.
+  int color_output = 0;
+  // The alpha test of a pass writing gl_FragData[n], n > 0: it tests colour zero's alpha
+  // (§4.1.4), so the fragment stage runs it (alpha_func, alpha_ref) and the key has it off.
+  bool alpha_test_color0 = false;
+  // A fragment shader's draw into several draw buffers (§4.2.1) shades each fragment once: the
+  // PerFragment instances store the fragments that pass the tests into these further buffers
+  // too, each through its own context's writer (write_color), with colour more[i]->color_output.
+  int more_count = 0;
+  const FragCtx* more[kMaxDrawBuffers - 1] = {};
+  ColorWriteFn write_color = nullptr;
   // Fragments that passed the stencil and depth tests, counted when key.count_samples
   // (occlusion queries, GL 2.1 §4.1.7); draw_primitives hands the sum to the query.
   mutable uint64_t samples_passed = 0;
@@ -116,6 +137,9 @@ inline FragCtx with_back_stencil(const FragCtx& ctx) {
   back.samples_passed = 0;
   return back;
 }
+
+// The colour writer for a key (FragCtx::write_color).
+ColorWriteFn select_color_writer(const StateKey& key);
 
 // The block loop for a key and shade path at the current simd_level() (exposed for tests).
 BlockFn select_block_fn(const StateKey& key, ShadePath shade);

@@ -456,8 +456,8 @@ void shade_block_sse2(const FragCtx& ctx, const FragInputs& in, int bx, int by, 
 } // namespace
 
 uint64_t shade_block(const FragCtx& ctx, const FragInputs& in, int bx, int by, uint64_t mask,
-                     float (*out)[64]) {
-  if (ctx.shade->program != nullptr) return shade_program_block(ctx, in, bx, by, mask, out);
+                     float (*out)[64], uint32_t* depth) {
+  if (ctx.shade->program != nullptr) return shade_program_block(ctx, in, bx, by, mask, out, depth);
 #if defined(__x86_64__)
   if (use_avx2()) {
     shade_block_avx2(ctx, in, bx, by, mask, out);

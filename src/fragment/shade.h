@@ -57,6 +57,12 @@ struct FragmentProgram {
   bool frag_coord = false;  // reads gl_FragCoord
   bool point_coord = false; // reads gl_PointCoord
   bool discards = false;    // may discard: the depth test waits for the shader
+  // Writes gl_FragDepth (§3.11.2): the shader's depth replaces the interpolated one in the
+  // depth test and write, so the depth test waits for the shader too.
+  bool writes_depth = false;
+  // Writes gl_FragData[n] (to draw buffer n) rather than gl_FragColor (to every draw buffer,
+  // §3.11.2, §4.2.1).
+  bool frag_data = false;
 };
 
 // Everything the per-fragment shading reads that is constant over a draw.
@@ -99,19 +105,29 @@ struct ShadeInputs {
   struct Plane {
     float v0, dx, dy;
   } prog_w[kMaxAttr];
+  // gl_PointCoord (s, t) as linear planes, set when the program reads it: the sprite
+  // coordinates of a point sprite (§3.3.1 eqs. 3.3, 3.4), zero for other primitives.
+  PlaneF point_coord[2];
 };
 
 // Colours of the fragments of `mask` in the block at (bx, by): out[c][8 * row + column] for
 // c = R, G, B, A, unclamped-safe floats (the block loop clamps and rounds). Every entry of a
 // row holding a fragment of `mask` is written (entries of no fragment with some defined value); the
 // other rows are left as they are. Returns the fragments of `mask` that remain: a fragment
-// shader may discard some (§3.11.2).
+// shader may discard some (§3.11.2). When ctx.shader_depth is set, `depth` (64 entries, same
+// order and rows) receives the depth the fragment shader wrote, in depth-buffer units.
 uint64_t shade_block(const FragCtx& ctx, const FragInputs& in, int bx, int by, uint64_t mask,
-                     float (*out)[64]);
+                     float (*out)[64], uint32_t* depth = nullptr);
 
-// The same through the draw's fragment shader (ctx.shade->program; shade_program.cpp).
+// The same through the draw's fragment shader (ctx.shade->program; shade_program.cpp): the
+// colour is gl_FragColor, or gl_FragData[ctx.color_output] for a shader that writes gl_FragData.
 uint64_t shade_program_block(const FragCtx& ctx, const FragInputs& in, int bx, int by,
-                             uint64_t mask, float (*out)[64]);
+                             uint64_t mask, float (*out)[64], uint32_t* depth);
+
+// After shade_program_block on this thread: the colours the shader gave draw buffer `output`
+// (gl_FragData[output], or gl_FragColor), in the layout shade_block writes (every entry of the
+// rows it wrote defined).
+void shade_program_colors(const FragCtx& ctx, int output, float (*out)[64]);
 
 // Texture environment of one fragment (exposed for tests): previous colour `cp`, primary colour
 // `cf`, every unit's texture colour `tex` (indexed by position in ShadeSetup::unit), the result

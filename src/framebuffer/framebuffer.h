@@ -28,6 +28,7 @@ struct ColorTarget {
   uint8_t* data = nullptr; // pixel (0,0)
   ptrdiff_t stride = 0;    // bytes from row y to row y+1
   int alpha_bits = 8;
+  int output = 0; // the draw buffer i (DRAW_BUFFERi) it is: gl_FragData[i] goes to it
 };
 
 // A window's buffers (the window-system layer owns the memory) or the images attached to a
@@ -40,6 +41,7 @@ struct Framebuffer {
   uint8_t* color = nullptr;   // address of pixel (0,0), the bottom-left one
   ptrdiff_t color_stride = 0; // bytes from row y to row y+1 (negative for top-down memory)
   int alpha_bits = 8;         // 0 for formats without alpha (RGB8)
+  int color_output = 0;       // the draw buffer i `color` is (ColorTarget::output)
 
   uint32_t* depth = nullptr; // row 0 at the bottom, depth_stride values a row
   int depth_bits = 0;        // 0 (no depth buffer), 16, 24 or 32; values in [0, 2^bits - 1]
@@ -76,6 +78,7 @@ struct Framebuffer {
     f.color = t.data;
     f.color_stride = t.stride;
     f.alpha_bits = t.alpha_bits;
+    f.color_output = t.output;
     f.more_count = 0;
     return f;
   }

@@ -467,6 +467,10 @@ std::unique_ptr<Program> Program::link(const std::vector<std::shared_ptr<const S
       std::fprintf(stderr, "fragment shader IR before optimization:\n%s",
                    shader::print(fs_ir).c_str());
     shader::optimize(fs_ir);
+    // GLSL 1.10 §7.2: a program may assign gl_FragColor or gl_FragData, not both. Each shader
+    // is checked when compiled (checks.cpp); two fragment shaders may still split them.
+    if (fs_res.written.count("gl_FragColor") > 0 && fs_res.written.count("gl_FragData") > 0)
+      return fail("ERROR: Linking: the fragment shaders write both gl_FragColor and gl_FragData");
     impl.frag_color = fs_res.written.count("gl_FragColor") > 0;
     impl.frag_depth = fs_res.written.count("gl_FragDepth") > 0;
     // Pack the varying components the optimized shader reads, in order, four to a slot.

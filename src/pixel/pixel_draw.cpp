@@ -80,6 +80,7 @@ void raster_shade_inputs(const ShadeSetup& ss, const RasterPos& rp, ShadeInputs&
     // every fragment; varyings are zero (no vertex shader ran for them).
     const FragmentProgram& fp = *ss.program;
     si.front_facing = true;
+    if (fp.point_coord) si.point_coord[0] = si.point_coord[1] = PlaneF{};
     for (int i = 0; i < fp.input_count; ++i) {
       const int a = fp.input_attr[i];
       float v = 0.0f;
@@ -202,9 +203,11 @@ uint64_t draw_pixel_rect(const RasterState& rs, const Framebuffer& fb, const Pix
   FragInputs in;
   if (r.rgba == nullptr) set_color(in, r.color);
   ShadeInputs si;
+  const FragmentProgram* program = nullptr;
   if (fc.shade != nullptr && r.raster != nullptr) {
     raster_shade_inputs(*fc.shade, *r.raster, si);
     in.shade = &si;
+    program = fc.shade->program;
   }
   const double fixed_z = clamp01(r.z) * fc.depth_max;
   in.z.v0 = fixed_z;
@@ -224,6 +227,13 @@ uint64_t draw_pixel_rect(const RasterState& rs, const Framebuffer& fb, const Pix
       std::memcpy(in.const_color, run_color, 4);
       for (int c = 0; c < 4; ++c)
         si.color[c] = static_cast<float>(run_color[c]) * (1.0f / 255.0f);
+      // A fragment shader's gl_Color is the group's colour (§3.6.4, §3.11).
+      if (program != nullptr)
+        for (int i = 0; i < program->input_count; ++i) {
+          const int a = program->input_attr[i];
+          if (a >= kAttrColor && a < kAttrColor + 4)
+            si.prog_w[i] = {si.color[a - kAttrColor], 0, 0};
+        }
       in.z.v0 = run_z;
       emit_rect(fc, in, run_x0, y0, run_x1, y1);
     };

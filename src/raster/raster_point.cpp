@@ -134,6 +134,8 @@ void point(const DrawCall& dc, const FragCtx& ctx, const PVertex& p) {
   ShadePath shade = ShadePath::Const;
   if (ctx.shade != nullptr) {
     setup_shade_point(*ctx.shade, p, si);
+    if (ctx.shade->program != nullptr && ctx.shade->program->point_coord)
+      setup_point_coord(p.win[0], p.win[1], size, x, y, si);
     in.shade = &si;
     shade = ShadePath::PerFragment;
   }

@@ -2,6 +2,8 @@
 // §3.4.1 eq 3.7 for lines: every attribute perspective-correct, as value/w and 1/w planes).
 #include "raster/setup_shade.h"
 
+#include "shader/io.h"
+
 namespace pineda {
 
 namespace {
@@ -41,6 +43,8 @@ bool same_colors(const ShadeSetup& ss, const PVertex* const* v, int n, int slot)
 template <typename F>
 void program_planes(const FragmentProgram& fp, const PVertex& provoking, bool flat, int color_slot,
                     ShadeInputs& out, F plane) {
+  // gl_PointCoord is zero but for point sprites (setup_shade_sprite).
+  if (fp.point_coord) out.point_coord[0] = out.point_coord[1] = PlaneF{};
   for (int i = 0; i < fp.input_count; ++i) {
     const int at = fp.input_attr[i];
     PlaneF p;
@@ -133,19 +137,54 @@ void setup_shade_point(const ShadeSetup& ss, const PVertex& p, ShadeInputs& out)
   const_colors(ss, p, kAttrColor, out);
 }
 
+namespace {
+
+// The sprite coordinates s and t (§3.3.1 eqs. 3.3, 3.4) of a square of side `size` centred on
+// (x, y), as planes from pixel (ox, oy); t upwards when `lower_left`.
+void sprite_planes(bool lower_left, double x, double y, double size, int ox, int oy,
+                   PlaneF& s_plane, PlaneF& t_plane) {
+  const double inv = 1.0 / size;
+  const double s0 = 0.5 + (ox + 0.5 - x) * inv;
+  const double t_up = (oy + 0.5 - y) * inv;
+  const double t0 = lower_left ? 0.5 + t_up : 0.5 - t_up;
+  const double dt = lower_left ? inv : -inv;
+  s_plane = PlaneF{static_cast<float>(s0), static_cast<float>(inv), 0.0f};
+  t_plane = PlaneF{static_cast<float>(t0), 0.0f, static_cast<float>(dt)};
+}
+
+} // namespace
+
+void setup_point_coord(double x, double y, double size, int ox, int oy, ShadeInputs& out) {
+  sprite_planes(false, x, y, size, ox, oy, out.point_coord[0], out.point_coord[1]);
+}
+
 void setup_shade_sprite(const ShadeSetup& ss, const RasterModes& modes, const PVertex& p,
                         float size, int ox, int oy, ShadeInputs& out) {
   setup_shade_point(ss, p, out);
-  const double inv = 1.0 / size;
-  const double s0 = 0.5 + (ox + 0.5 - static_cast<double>(p.win[0])) * inv;
-  const double t_up = (oy + 0.5 - static_cast<double>(p.win[1])) * inv;
-  const double t0 = modes.sprite_lower_left ? 0.5 + t_up : 0.5 - t_up;
-  const double dt = modes.sprite_lower_left ? inv : -inv;
+  PlaneF s_plane, t_plane;
+  sprite_planes(modes.sprite_lower_left, p.win[0], p.win[1], size, ox, oy, s_plane, t_plane);
+  if (ss.program != nullptr) {
+    // A fragment shader: gl_PointCoord is (s, t), and gl_TexCoord[u] of the units with
+    // COORD_REPLACE is (s, t, 0, 1) (every plane is a value plane: 1/w is 1 for points).
+    const FragmentProgram& fp = *ss.program;
+    if (fp.point_coord) {
+      out.point_coord[0] = s_plane;
+      out.point_coord[1] = t_plane;
+    }
+    for (int i = 0; i < fp.input_count; ++i) {
+      const int slot = fp.input_comp[i] / 4 - shader::kFragTexCoord0, c = fp.input_comp[i] % 4;
+      if (slot < 0 || slot >= kMaxTexUnits || !((modes.sprite_coord_replace >> slot) & 1u))
+        continue;
+      const PlaneF pl = c == 0 ? s_plane : c == 1 ? t_plane : PlaneF{c == 3 ? 1.0f : 0.0f, 0, 0};
+      out.prog_w[i] = {pl.v0, pl.dx, pl.dy};
+    }
+    return;
+  }
   for (int k = 0; k < ss.unit_count; ++k) {
     const int u = ss.unit[k].index;
     if (!((modes.sprite_coord_replace >> u) & 1u)) continue;
-    out.tex_w[u][0] = PlaneF{static_cast<float>(s0), static_cast<float>(inv), 0.0f};
-    out.tex_w[u][1] = PlaneF{static_cast<float>(t0), 0.0f, static_cast<float>(dt)};
+    out.tex_w[u][0] = s_plane;
+    out.tex_w[u][1] = t_plane;
     out.tex_w[u][2] = PlaneF{0.0f, 0.0f, 0.0f};
     out.tex_w[u][3] = PlaneF{1.0f, 0.0f, 0.0f};
   }

@@ -30,4 +30,10 @@ void setup_shade_point(const ShadeSetup& ss, const PVertex& p, ShadeInputs& out)
 void setup_shade_sprite(const ShadeSetup& ss, const RasterModes& modes, const PVertex& p,
                         float size, int ox, int oy, ShadeInputs& out);
 
+// gl_PointCoord of an aliased point that is not a sprite, at window (x, y) with size `size`,
+// whose fragments start at pixel (ox, oy): the sprite coordinates of eqs. 3.3, 3.4 with the
+// UPPER_LEFT origin whatever POINT_SPRITE_COORD_ORIGIN says, as llvmpipe gives them (GL 2.1
+// leaves them undefined).
+void setup_point_coord(double x, double y, double size, int ox, int oy, ShadeInputs& out);
+
 } // namespace pineda

@@ -305,8 +305,10 @@ void derive_object(const FramebufferObject& fbo, const GLenum* draw_buffers, boo
   bool primary = false;
   for (int i = 0; i < kMaxDrawBuffers; ++i) {
     if (draw_buffers[i] == GL_NONE || !target_of(buffer_attachment(draw_buffers[i]), t)) continue;
+    t.output = i;
     if (!primary) {
       fb.color = t.data, fb.color_stride = t.stride, fb.alpha_bits = t.alpha_bits;
+      fb.color_output = i;
       primary = true;
     } else if (fb.more_count < kMaxDrawBuffers - 1) {
       fb.more[fb.more_count++] = t;

@@ -419,6 +419,8 @@ void derive_program(Context& ctx, uint32_t) {
     f.prepared = d.fs_prepared.get();
     f.sampler = d.sampler.get();
     f.discards = fs->discards();
+    f.writes_depth = lp->program->writes_frag_depth();
+    f.frag_data = !lp->program->writes_frag_color();
     for (int c : fs->inputs_read()) {
       const int slot = c / 4;
       if (slot == kFragCoord) f.frag_coord = true;

@@ -8,7 +8,6 @@
 #include "dispatch.h"
 #include "state/api_util.h"
 #include "state/area.h"
-#include "shader/io.h"
 #include "state/program_internal.h"
 
 namespace pineda {
@@ -88,7 +87,7 @@ glsl::Limits glsl_limits() {
   l.max_vertex_texture_image_units = kMaxVertexTextureImageUnits;
   l.max_texture_image_units = kMaxTextureImageUnits;
   l.max_combined_texture_image_units = kMaxCombinedTextureImageUnits;
-  l.max_draw_buffers = 1;
+  l.max_draw_buffers = kMaxDrawBuffers;
   return l;
 }
 
@@ -327,20 +326,6 @@ void GLAPIENTRY LinkProgram(GLuint program) {
   p->info_log = log;
   p->validate_status = false;
   p->link_status = lp->program != nullptr && lp->program->linked();
-  if (p->link_status) {
-    // Not drawn yet: gl_FragDepth (GL 2.1 §3.11.2) would keep the interpolated depth and
-    // gl_PointCoord would read zero. Such a program fails to link and its log says why,
-    // rather than drawing wrongly.
-    const char* missing = lp->program->writes_frag_depth() ? "gl_FragDepth" : nullptr;
-    if (const shader::Executable* fs = lp->program->fragment())
-      for (int c : fs->inputs_read())
-        if (c / 4 == shader::kFragPointCoord) missing = "gl_PointCoord";
-    if (missing != nullptr) {
-      log += std::string("error: ") + missing + " is not supported by Pineda yet\n";
-      p->info_log = log;
-      p->link_status = false;
-    }
-  }
   if (!p->link_status) {
     // §2.15.2: a failed link leaves the executables of the last successful link installed
     // where the program is in use; its reflection is gone.
