@@ -203,7 +203,8 @@ def main():
             ax.set_ylabel("frame time ms (median)")
             if col == 0 and row == 0:
                 ax.legend(fontsize=7, loc="lower right")
-    fig.suptitle("Time against error: quality variants chosen through GL state (* = accurate)",
+    fig.suptitle("Time against error: quality variants chosen through GL state or the shader "
+                 "(* = accurate)",
                  fontsize=11)
     fig.tight_layout()
     fig.savefig(args.png, dpi=110)

@@ -1,9 +1,9 @@
 #!/usr/bin/env bash
-# Time against error (issue 6): the quality variants of bench/scenes/sweep_scenes.cpp (filters,
-# mipmaps, perspective and fog hints, shade model) rendered by Pineda and Mesa llvmpipe,
-# alternating, several rounds (medians). Each variant's error is measured against llvmpipe's
-# render of its family's accurate variant. Writes bench-out/sweep.csv, the chart
-# bench-out/time_vs_error.png and the images under bench-out/sweep/. Not part of the test run.
+# Time against error (issue 6): the quality variants of bench/scenes/sweep_scenes.cpp and
+# shader_scenes.cpp (filters, mipmaps, hints, shade model, fewer shader lights) rendered by Pineda
+# and Mesa llvmpipe, alternating, several rounds (medians). Each variant's error is measured
+# against llvmpipe's render of its family's accurate variant. Writes bench-out/sweep.csv, the
+# chart bench-out/time_vs_error.png and the images under bench-out/sweep/. Not in the test run.
 # Usage: scripts/sweep.sh [--rounds N] [--reps N] [--filter SUBSTR]
 set -euo pipefail
 cd "$(dirname "$0")/.."
