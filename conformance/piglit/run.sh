@@ -4,7 +4,7 @@
 # part of the test run (scripts/test.sh): it takes minutes (the GLSL lists, tens of minutes).
 #
 # Usage: conformance/piglit/run.sh [--list gl1x|glsl-shader|glsl-parser|FILE] [--build DIR]
-#          [--out DIR] [--filter REGEX] [--no-mesa] [--jobs N] [--expect FILE]
+#          [--out DIR] [--filter REGEX] [--no-mesa | --no-pineda] [--jobs N] [--expect FILE]
 # Lists (beside this script): gl1x-tests.txt (the default; Mesa at GL 1.5 with 2003's
 # extensions, expectations.txt), glsl-shader-tests.txt and glsl-parser-tests.txt (written by
 # make_glsl_lists.py; Mesa at GL 2.1, expectations-glsl.txt). A line is `COMMAND` (the test is
@@ -13,6 +13,8 @@
 # Writes <out>/results.tsv (test, pineda result, mesa result, seconds) and <out>/logs/, prints
 # each test and the totals, and exits non-zero when a test that passes on Mesa does not pass on
 # Pineda without being listed in the expectations, or when a listed test passes (a stale entry).
+# --no-pineda runs Mesa only (a baseline; no libGL.so.1 needed): results.tsv then has "-" for
+# Pineda, the seconds are Mesa's, and no expectation is checked.
 set -euo pipefail
 cd "$(dirname "$0")/../.."
 
@@ -20,6 +22,7 @@ BUILD=build
 OUT=piglit-out
 FILTER=.
 MESA=1
+PINEDA=1
 JOBS=2
 LIST_NAME=gl1x
 EXPECT=""
@@ -31,8 +34,9 @@ while [ $# -gt 0 ]; do
     --out) OUT=$2; shift 2 ;;
     --filter) FILTER=$2; shift 2 ;;
     --no-mesa) MESA=0; shift ;;
+    --no-pineda) PINEDA=0; shift ;;
     --jobs) JOBS=$2; shift 2 ;;
-    -h|--help) sed -n 2,16p "$0"; exit 0 ;;
+    -h|--help) sed -n 2,18p "$0"; exit 0 ;;
     *) echo "run.sh: unknown argument '$1' (see --help)" >&2; exit 2 ;;
   esac
 done
@@ -59,11 +63,18 @@ if [ ! -d "$BIN" ]; then
   echo "run.sh: $BIN is missing; install Debian's piglit package (scripts/deps.sh does)" >&2
   exit 2
 fi
-if [ ! -e "$BUILD/lib/libGL.so.1" ]; then
-  echo "run.sh: $BUILD/lib/libGL.so.1 is missing; build the 'pineda' target first" >&2
+if [ "$MESA" = 0 ] && [ "$PINEDA" = 0 ]; then
+  echo "run.sh: --no-mesa and --no-pineda leave nothing to run" >&2
   exit 2
 fi
-LIB=$(cd "$BUILD/lib" && pwd)
+LIB=""
+if [ "$PINEDA" = 1 ]; then
+  if [ ! -e "$BUILD/lib/libGL.so.1" ]; then
+    echo "run.sh: $BUILD/lib/libGL.so.1 is missing; build the 'pineda' target first" >&2
+    exit 2
+  fi
+  LIB=$(cd "$BUILD/lib" && pwd)
+fi
 
 rm -rf "$OUT"
 mkdir -p "$OUT/logs"
@@ -109,14 +120,20 @@ export -f run_one
 export OUT LIB BIN PIGLIT MESA_ENV
 
 one_line() {
-  local line=$1 name p m="-"
+  local line=$1 name p="- 0" m="-"
   name=$(line_name "$line")
-  p=$(run_one pineda "$line")
-  if [ "$MESA" = 1 ]; then m=$(run_one mesa "$line" | cut -d' ' -f1); fi
+  if [ "$PINEDA" = 1 ]; then
+    p=$(run_one pineda "$line")
+    if [ "$MESA" = 1 ]; then m=$(run_one mesa "$line" | cut -d' ' -f1); fi
+  else
+    m=$(run_one mesa "$line")
+    p="- ${m##* }"
+    m=${m%% *}
+  fi
   printf '%s\t%s\t%s\t%s\n' "$name" "${p%% *}" "$m" "${p##* }"
 }
 export -f one_line
-export MESA
+export MESA PINEDA
 
 tests/glx/run_with_xvfb.sh "$(command -v Xvfb)" bash -c "
   grep -v '^#' '$LIST' | grep -E -- '$FILTER' | tr '\\n' '\\0' |
@@ -129,7 +146,9 @@ printf '%-55s %-8s %-8s %s\n' test pineda mesa note
 bad=0
 while IFS=$'\t' read -r name p m secs; do
   note=""
-  if [ "$m" = pass ] && [ "$p" != pass ]; then
+  if [ "$PINEDA" = 0 ]; then
+    :
+  elif [ "$m" = pass ] && [ "$p" != pass ]; then
     if expected "$name"; then note="expected (expectations.txt)"; else note="UNEXPECTED"; bad=$((bad + 1)); fi
   elif [ "$p" = pass ] && expected "$name" &&
     ! awk -F'\t' -v n="$name" '$1 == n && $3 == "pass" && $2 != "pass" {f = 1} END {exit !f}' \
@@ -144,9 +163,10 @@ echo "piglit list $LIST: $total tests (results in $OUT/results.tsv, logs in $OUT
 for r in pass fail skip warn crash timeout; do
   p=$(awk -F'\t' -v r=$r '$2 == r' "$OUT/results.tsv" | wc -l)
   m=$(awk -F'\t' -v r=$r '$3 == r' "$OUT/results.tsv" | wc -l)
-  printf '  %-8s pineda %4d   mesa %4s\n' "$r" "$p" "$([ "$MESA" = 1 ] && echo "$m" || echo -)"
+  printf '  %-8s pineda %4s   mesa %4s\n' "$r" "$([ "$PINEDA" = 1 ] && echo "$p" || echo -)" \
+    "$([ "$MESA" = 1 ] && echo "$m" || echo -)"
 done
-if [ "$MESA" = 1 ]; then
+if [ "$MESA" = 1 ] && [ "$PINEDA" = 1 ]; then
   echo "  passing on Mesa but not on Pineda: $(awk -F'\t' '$3 == "pass" && $2 != "pass"' "$OUT/results.tsv" | wc -l)"
   echo "  unexpected results (not in expectations.txt, or stale entries): $bad"
   [ "$bad" -eq 0 ]
