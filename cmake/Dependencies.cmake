@@ -7,8 +7,9 @@
 #   PINEDA_GLVND        EGL and the glvnd vendor libraries              (egl.xml, EGL and glvnd
 #                                                                        headers)
 #   PINEDA_TESTS        unit/API/property/thread tests                  (GoogleTest)
-#   PINEDA_X11_TESTS    the GLX tests and real programs under Xvfb      (Xvfb, mesa-utils, GLFW,
-#                                                                        freeglut, libGL, libpng)
+#   PINEDA_X11_TESTS    the GLX tests, real programs and piglit under   (Xvfb, mesa-utils, GLFW,
+#                       Xvfb                                             freeglut, libGL, libpng,
+#                                                                        piglit)
 #   PINEDA_DEMOS        the GLFW demos                                  (GLFW, libGL, libpng)
 #   PINEDA_CONFORMANCE  the conformance diff against Mesa's OSMesa      (libOSMesa, libpng)
 #   PINEDA_BENCH        the micro-benchmarks                            (Google Benchmark)
@@ -126,6 +127,8 @@ if(PINEDA_X11_TESTS)
   pineda_require_program(PINEDA_GLXINFO glxinfo mesa-utils)
   pineda_require_program(PINEDA_GLXGEARS glxgears mesa-utils)
   pineda_require_header(PINEDA_FREEGLUT_INCLUDE GL/freeglut.h freeglut3-dev)
+  # piglit's shader_runner for the sample of piglit's GLSL tests (conformance/piglit).
+  pineda_require_file(/usr/lib/x86_64-linux-gnu/piglit/bin/shader_runner piglit "piglit's")
   if(PINEDA_GLVND)
     pineda_require_program(PINEDA_EGLINFO eglinfo mesa-utils)
   endif()

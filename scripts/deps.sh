@@ -22,7 +22,7 @@ PACKAGES=(
   libglvnd-core-dev libegl-dev # glvnd's vendor ABI headers (GLX, EGL); EGL/eglext.h
   librust-khronos-api-dev # egl.xml, the EGL registry (khronos-api has only gl.xml, glx.xml)
   freeglut3-dev          # tests/programs: a freeglut program on Pineda
-  piglit                 # scripts/piglit.sh: the external GL 1.x test list (not in the test run)
+  piglit                 # conformance/piglit: the GL 1.x and GLSL lists; ctest piglit.glsl_sample
   python3-matplotlib     # scripts/sweep.sh, scaling.sh: charts (run with /usr/bin/python3)
   mmdebstrap             # scripts/fresh_root.sh: the quick start on a fresh Debian 12 root
 )

@@ -7,11 +7,15 @@
 
 namespace pineda {
 
-// GL 1.5: every GL 1.0-1.5 command is implemented (src/api/entry_points.txt; the check is
-// tests/unit/api/version_test.cpp).
-constexpr int kGLVersionMajor = 1;
-constexpr int kGLVersionMinor = 5;
-constexpr const char* kGLVersionString = "1.5 Pineda 0.2";
+// GL 2.1: every GL 1.0-2.1 command is implemented (src/api/entry_points.txt; the check is
+// tests/unit/api/version_test.cpp), with GLSL 1.10 and 1.20 shaders (src/glsl).
+constexpr int kGLVersionMajor = 2;
+constexpr int kGLVersionMinor = 1;
+constexpr const char* kGLVersionString = "2.1 Pineda 0.2";
+
+// GL 2.1 §6.1.11: SHADING_LANGUAGE_VERSION, "major.minor" followed by vendor text; GLSL 1.20 is
+// the version GL 2.1 goes with (shaders may also say #version 110, or no version).
+constexpr const char* kGLSLVersionString = "1.20";
 
 // kGLExtensions, the GL_EXTENSIONS string, is generated from src/api/extensions.txt together
 // with the extensions' exported entry points, so the two cannot disagree.

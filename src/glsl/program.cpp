@@ -718,6 +718,16 @@ std::unique_ptr<Program> Program::link(const std::vector<std::shared_ptr<const S
     }
   read_vs.resize(static_cast<size_t>(layout.words), 0);
   read_fs.resize(static_cast<size_t>(layout.words), 0);
+  // A uniform with an initializer is active even when no code reads it, as in Mesa: an
+  // application that declares a value for it may set it (piglit's uniform-initializer
+  // *-set-by-API tests); GL 2.1 §2.15.3 leaves activity of unread uniforms to the linker.
+  for (const std::vector<Decl>* decls : {&vs_decls, &fs_decls})
+    for (const Decl& d : *decls) {
+      if (d.storage != EvqUniform || d.sym->getConstArray().size() == 0) continue;
+      const int w = layout.word_of(d.name, *d.type);
+      for (int k = 0; k < component_count(*d.type) && w + k < layout.words; ++k)
+        (decls == &vs_decls ? read_vs : read_fs)[static_cast<size_t>(w + k)] = 1;
+    }
   for (const Leaf& leaf : layout.leaves) {
     int size = 0;
     for (int e = 0; e < leaf.count; ++e)

@@ -93,6 +93,9 @@ const GLubyte* GLAPIENTRY GetString(GLenum name) {
   case GL_VERSION:
     s = kGLVersionString;
     break; // core/version.h
+  case GL_SHADING_LANGUAGE_VERSION:
+    s = kGLSLVersionString;
+    break;
   case GL_EXTENSIONS:
     s = kGLExtensions;
     break;

@@ -675,7 +675,19 @@ TEST_F(Glx, CreateContextAttribs) {
   EXPECT_NE(ctx, nullptr);
   EXPECT_EQ(g_error_count, 0);
   glXDestroyContext(dpy, ctx);
+  // GL 2.0 and 2.1, what glGetString(GL_VERSION) claims, are given.
+  for (const int minor : {0, 1}) {
+    const int v2[] = {GLX_CONTEXT_MAJOR_VERSION_ARB, 2, GLX_CONTEXT_MINOR_VERSION_ARB, minor, None};
+    GLXContext ok = glXCreateContextAttribsARB(dpy, c, nullptr, True, v2);
+    EXPECT_NE(ok, nullptr) << "2." << minor;
+    glXDestroyContext(dpy, ok);
+  }
+  EXPECT_EQ(g_error_count, 0);
   // Beyond what glGetString(GL_VERSION) claims: GLXBadFBConfig.
+  const int v30[] = {GLX_CONTEXT_MAJOR_VERSION_ARB, 3, GLX_CONTEXT_MINOR_VERSION_ARB, 0, None};
+  EXPECT_EQ(glXCreateContextAttribsARB(dpy, c, nullptr, True, v30), nullptr);
+  XSync(dpy, False);
+  EXPECT_EQ(g_error_count, 1);
   const int v33[] = {GLX_CONTEXT_MAJOR_VERSION_ARB,
                      3,
                      GLX_CONTEXT_MINOR_VERSION_ARB,
@@ -685,7 +697,7 @@ TEST_F(Glx, CreateContextAttribs) {
                      None};
   EXPECT_EQ(glXCreateContextAttribsARB(dpy, c, nullptr, True, v33), nullptr);
   XSync(dpy, False);
-  EXPECT_EQ(g_error_count, 1);
+  EXPECT_EQ(g_error_count, 2);
   // A version that does not exist: BadMatch.
   const int v17[] = {GLX_CONTEXT_MAJOR_VERSION_ARB, 1, GLX_CONTEXT_MINOR_VERSION_ARB, 7, None};
   EXPECT_EQ(glXCreateContextAttribsARB(dpy, c, nullptr, True, v17), nullptr);

@@ -60,6 +60,15 @@ TEST(OSMesa, CreationVariants) {
   EXPECT_EQ(OSMesaCreateContextExt(OSMESA_COLOR_INDEX, 16, 0, 0, nullptr), nullptr);
   const int core[] = {OSMESA_PROFILE, OSMESA_CORE_PROFILE, 0};
   EXPECT_EQ(OSMesaCreateContextAttribs(core, nullptr), nullptr);
+  // Up to the version glGetString(GL_VERSION) reports, 2.1, and no further.
+  for (const int minor : {0, 1}) {
+    const int v2[] = {OSMESA_CONTEXT_MAJOR_VERSION, 2, OSMESA_CONTEXT_MINOR_VERSION, minor, 0};
+    OSMesaContext ok = OSMesaCreateContextAttribs(v2, nullptr);
+    EXPECT_NE(ok, nullptr) << "2." << minor;
+    OSMesaDestroyContext(ok);
+  }
+  const int v30[] = {OSMESA_CONTEXT_MAJOR_VERSION, 3, OSMESA_CONTEXT_MINOR_VERSION, 0, 0};
+  EXPECT_EQ(OSMesaCreateContextAttribs(v30, nullptr), nullptr);
   const int attribs[] = {
       OSMESA_FORMAT, OSMESA_BGRA, OSMESA_DEPTH_BITS, 32, OSMESA_STENCIL_BITS, 8, 0};
   OSMesaContext c = OSMesaCreateContextAttribs(attribs, nullptr);

@@ -242,6 +242,25 @@ TEST_F(ShaderTest, ActiveUniformsAndAttributes) {
   EXPECT_EQ(err(), static_cast<GLenum>(GL_INVALID_VALUE));
 }
 
+// A uniform with an initializer is active though unread (as in Mesa), and glUniform sets it;
+// an unread uniform without one is not.
+TEST_F(ShaderTest, InitializedUniformIsActiveWhenUnread) {
+  const GLuint p = program("void main() { gl_Position = gl_Vertex; }\n",
+                           "#version 120\nuniform float unread = 2.0;\nuniform vec2 unused;\n"
+                           "void main() { gl_FragColor = vec4(1.0); }\n");
+  const GLint loc = glGetUniformLocation(p, "unread");
+  ASSERT_GE(loc, 0);
+  EXPECT_EQ(glGetUniformLocation(p, "unused"), -1);
+  GLfloat v = 0.0f;
+  glGetUniformfv(p, loc, &v);
+  EXPECT_EQ(v, 2.0f);
+  glUseProgram(p);
+  glUniform1f(loc, -0.5f);
+  glGetUniformfv(p, loc, &v);
+  EXPECT_EQ(v, -0.5f);
+  EXPECT_EQ(err(), static_cast<GLenum>(GL_NO_ERROR));
+}
+
 TEST_F(ShaderTest, UniformTypeChecks) {
   const GLuint p =
       program(nullptr, "uniform vec4 c;\nuniform int i;\nuniform bool b;\nuniform float f;\n"

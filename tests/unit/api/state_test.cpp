@@ -69,7 +69,9 @@ TEST_F(State, InitialValues) {
 TEST_F(State, StringsAreHonest) {
   const char* version = reinterpret_cast<const char*>(glGetString(GL_VERSION));
   ASSERT_NE(version, nullptr);
-  EXPECT_EQ(std::string(version).substr(0, 4), "1.5 ");
+  EXPECT_EQ(std::string(version).substr(0, 4), "2.1 ");
+  EXPECT_EQ(std::string(reinterpret_cast<const char*>(glGetString(GL_SHADING_LANGUAGE_VERSION))),
+            "1.20");
   EXPECT_NE(std::string(reinterpret_cast<const char*>(glGetString(GL_RENDERER))).find("Pineda"),
             std::string::npos);
   EXPECT_NE(glGetString(GL_EXTENSIONS), nullptr);
