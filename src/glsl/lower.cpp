@@ -50,7 +50,10 @@ int tree_depth(TIntermNode* root) {
   std::vector<std::pair<TIntermNode*, int>> stack{{root, 1}};
   int deepest = 0;
   while (!stack.empty()) {
-    auto [n, d] = stack.back();
+    // Plain variables, not a structured binding: clang 14 (the fuzz build's compiler) cannot
+    // capture a binding in the lambda below.
+    TIntermNode* const n = stack.back().first;
+    const int d = stack.back().second;
     stack.pop_back();
     deepest = std::max(deepest, d);
     children(n, [&](TIntermNode* c) {

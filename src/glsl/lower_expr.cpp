@@ -117,7 +117,13 @@ Comps Lowerer::constant(const TConstUnionArray& c, const TType& t) {
     switch (u.getType()) {
     case EbtFloat:
     case EbtDouble:
-      d = u.getDConst(), i = static_cast<int32_t>(d), b = d != 0;
+      // As the engine's F2I (vmath.h f2i): NaN gives 0, out-of-range values saturate (a
+      // folded constant such as inversesqrt(0.0) or an overflow must not be a cast's UB).
+      d = u.getDConst(), b = d != 0;
+      i = d != d               ? 0
+          : d <= -2147483648.0 ? INT32_MIN
+          : d >= 2147483520.0  ? 2147483520
+                               : static_cast<int32_t>(d);
       break;
     case EbtBool:
       b = u.getBConst(), d = b ? 1 : 0, i = b;

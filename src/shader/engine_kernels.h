@@ -287,7 +287,8 @@ void fill_lane(Kernel* t, std::integer_sequence<int, K...>) {
 
 // The table for whole blocks (Block) or small runs (engine_internal.h).
 template <int W, bool Block> KernelTable make_kernel_table() {
-  constexpr int NV = (Block ? kBlockLanes : kSmallRunLanes) / W;
+  // static: the lambda below uses it without a capture, which clang 14 allows only then.
+  static constexpr int NV = (Block ? kBlockLanes : kSmallRunLanes) / W;
   static const auto table = [] {
     struct T {
       Kernel k[kNumKernels];

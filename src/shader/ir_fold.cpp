@@ -179,10 +179,12 @@ constexpr FoldFn kFold[] = {
 } // namespace
 
 uint32_t eval_lane_op(LaneOp op, uint32_t a, uint32_t b, uint32_t c) {
+  // Lanes by value, not by address: clang does not take the address of a vector element.
   const auto bits = [](uint32_t v) {
+    float f;
+    __builtin_memcpy(&f, &v, 4);
     F4 r;
-    __builtin_memcpy(&r[0], &v, 4);
-    r[1] = r[2] = r[3] = r[0];
+    r[0] = r[1] = r[2] = r[3] = f;
     return r;
   };
   ShaderFpEnv env;
