@@ -343,14 +343,16 @@ int main(int argc, char** argv) {
                    m.first_draw_ms);
     if (p.status != "linked" || m.status != "linked") continue;
     ++both;
-    const auto track = [&](std::vector<double>& v, double x, double& mx, std::string& at) {
+    // The name passed in: clang 14 cannot capture a structured binding.
+    const auto track = [&](std::vector<double>& v, double x, double& mx, std::string& at,
+                           const std::string& program) {
       v.push_back(x);
-      if (x > mx) mx = x, at = name;
+      if (x > mx) mx = x, at = program;
     };
-    track(pcl, p.compile_link_ms, pcl_m, pcl_max);
-    track(pfd, p.first_draw_ms, pfd_m, pfd_max);
-    track(mcl, m.compile_link_ms, mcl_m, mcl_max);
-    track(mfd, m.first_draw_ms, mfd_m, mfd_max);
+    track(pcl, p.compile_link_ms, pcl_m, pcl_max, name);
+    track(pfd, p.first_draw_ms, pfd_m, pfd_max, name);
+    track(mcl, m.compile_link_ms, mcl_m, mcl_max, name);
+    track(mfd, m.first_draw_ms, mfd_m, mfd_max, name);
     rcl.push_back(p.compile_link_ms / std::max(m.compile_link_ms, 1e-6));
     rfd.push_back(p.first_draw_ms / std::max(m.first_draw_ms, 1e-6));
   }
