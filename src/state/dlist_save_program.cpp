@@ -10,6 +10,7 @@
 #include <type_traits>
 #include <vector>
 
+#include "core/normalize.h"
 #include "dispatch.h"
 #include "state/api_util.h"
 #include "state/dlist_internal.h"
@@ -49,17 +50,6 @@ void attrib(GLuint index, float x, float y, float z, float w) {
   if (executes(ctx)) exec::VertexAttrib4f(index, x, y, z, w);
 }
 
-template <typename T> float normalized(T v) {
-  if constexpr (std::is_same_v<T, GLubyte>) return static_cast<float>(v) / 255.0f;
-  if constexpr (std::is_same_v<T, GLbyte>) return (2.0f * v + 1.0f) / 255.0f;
-  if constexpr (std::is_same_v<T, GLushort>) return static_cast<float>(v) / 65535.0f;
-  if constexpr (std::is_same_v<T, GLshort>) return (2.0f * v + 1.0f) / 65535.0f;
-  if constexpr (std::is_same_v<T, GLuint>)
-    return static_cast<float>(static_cast<double>(v) / 4294967295.0);
-  if constexpr (std::is_same_v<T, GLint>) return static_cast<float>((2.0 * v + 1.0) / 4294967295.0);
-  return static_cast<float>(v);
-}
-
 template <typename T> void attrib_v(GLuint index, int n, const T* v) {
   if (v == nullptr) return;
   float f[4] = {0.0f, 0.0f, 0.0f, 1.0f};
@@ -70,7 +60,7 @@ template <typename T> void attrib_v(GLuint index, int n, const T* v) {
 
 template <typename T> void attrib_nv(GLuint index, const T* v) {
   if (v == nullptr) return;
-  attrib(index, normalized(v[0]), normalized(v[1]), normalized(v[2]), normalized(v[3]));
+  attrib(index, norm_divided(v[0]), norm_divided(v[1]), norm_divided(v[2]), norm_divided(v[3]));
 }
 
 // Uniform*v and UniformMatrix*fv: the header, then the copied values.

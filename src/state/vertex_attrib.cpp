@@ -7,6 +7,7 @@
 #include <cstring>
 #include <type_traits>
 
+#include "core/normalize.h"
 #include "dispatch.h"
 #include "state/api_util.h"
 #include "state/fetch.h"
@@ -15,18 +16,6 @@
 namespace pineda {
 
 namespace {
-
-// Table 2.9: the conversions of the normalized (N) commands and arrays.
-template <typename T> float normalize_value(T v) {
-  if constexpr (std::is_same_v<T, GLubyte>) return static_cast<float>(v) / 255.0f;
-  if constexpr (std::is_same_v<T, GLbyte>) return (2.0f * v + 1.0f) / 255.0f;
-  if constexpr (std::is_same_v<T, GLushort>) return static_cast<float>(v) / 65535.0f;
-  if constexpr (std::is_same_v<T, GLshort>) return (2.0f * v + 1.0f) / 65535.0f;
-  if constexpr (std::is_same_v<T, GLuint>)
-    return static_cast<float>(static_cast<double>(v) / 4294967295.0);
-  if constexpr (std::is_same_v<T, GLint>) return static_cast<float>((2.0 * v + 1.0) / 4294967295.0);
-  return static_cast<float>(v);
-}
 
 // VertexAttrib with index `index` and (x, y, z, w): attribute 0 is Vertex (§2.7), the others
 // set the current value.
@@ -50,8 +39,8 @@ template <typename T> void attrib_n(const char* func, GLuint index, int n, const
 
 template <typename T> void attrib_norm(const char* func, GLuint index, const T* v) {
   if (v == nullptr) return;
-  attrib(func, index, normalize_value(v[0]), normalize_value(v[1]), normalize_value(v[2]),
-         normalize_value(v[3]));
+  attrib(func, index, norm_divided(v[0]), norm_divided(v[1]), norm_divided(v[2]),
+         norm_divided(v[3]));
 }
 
 GenericArray* generic_array(Context* ctx, GLuint index, const char* func) {
@@ -84,7 +73,7 @@ const uint8_t* generic_base(Context* ctx, const GenericArray& a, size_t max_elem
 template <typename T> float component(const uint8_t* p, bool normalized) {
   T v;
   std::memcpy(&v, p, sizeof v);
-  return normalized ? normalize_value(v) : static_cast<float>(v);
+  return normalized ? norm_divided(v) : static_cast<float>(v);
 }
 
 float read_component(GLenum type, const uint8_t* p, bool normalized) {
